@@ -1,0 +1,23 @@
+//TRC::Version
+//============================================================================
+// TiledRayCast: rays that start inside the mesh, at the near plane.
+//============================================================================
+//TRC::Common::Dec
+
+flat in uint ip_tet;
+
+layout(location = 0) out vec4 fragOutput0;
+layout(location = 1) out vec4 fragOutput1;
+
+void main()
+{
+  TrcRay ray = trcPixelRay(gl_FragCoord.xy);
+  if (in_lambdaNear >= ray.lambdaMax)
+  {
+    discard;
+  }
+  // Depth 0: a ray that starts at the near plane wins over every boundary face.
+  gl_FragDepth = 0.0;
+  fragOutput0 = trcPackState(ip_tet, in_lambdaNear, TRC_ACTIVE, TRC_NO_FACE);
+  fragOutput1 = vec4(in_lambdaNear, uintBitsToFloat(TRC_NEAR_PLANE_KEY), 0.0, 0.0);
+}

@@ -1,0 +1,39 @@
+//============================================================================
+// TiledRayCast: full pre-integration with a 3D table of premultiplied colour
+// and opacity over (front scalar, back scalar, length), computed exactly on
+// the CPU at the table's grid points and read with trilinear filtering.
+// Segments longer than the table's longest length are split into equal parts.
+//============================================================================
+uniform sampler3D in_preIntegrationTable;
+// (first grid scalar, grid scalars per scalar unit, size)
+uniform vec3 in_tableScalarMap;
+// (grid lengths per world unit, size, longest length)
+uniform vec3 in_tableLengthMap;
+
+void trcIntegrate(float sf, float sb, float d, inout vec4 color)
+{
+  if (!(d > 0.0) || isnan(sf) || isnan(sb) || isinf(sf) || isinf(sb))
+  {
+    return;
+  }
+  int parts = int(ceil(d / in_tableLengthMap.z));
+  parts = max(parts, 1);
+  float partLength = d / float(parts);
+  float size = in_tableScalarMap.z;
+  float lengthSize = in_tableLengthMap.y;
+  for (int k = 0; k < parts; ++k)
+  {
+    float s0 = mix(sf, sb, float(k) / float(parts));
+    float s1 = mix(sf, sb, float(k + 1) / float(parts));
+    vec3 grid = vec3(clamp((s0 - in_tableScalarMap.x) * in_tableScalarMap.y, 0.0, size - 1.0),
+      clamp((s1 - in_tableScalarMap.x) * in_tableScalarMap.y, 0.0, size - 1.0),
+      clamp(partLength * in_tableLengthMap.x, 0.0, lengthSize - 1.0));
+    vec4 piece = texture(in_preIntegrationTable, (grid + 0.5) / vec3(size, size, lengthSize));
+    color.rgb += (1.0 - color.a) * piece.rgb;
+    color.a += (1.0 - color.a) * piece.a;
+    if (color.a >= in_earlyTerminationOpacity)
+    {
+      return;
+    }
+  }
+}

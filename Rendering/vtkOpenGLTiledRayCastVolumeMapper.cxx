@@ -1,0 +1,1890 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkOpenGLTiledRayCastVolumeMapper.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkOpenGLTiledRayCastVolumeMapper.h"
+
+#include "vtkCamera.h"
+#include "vtkDataArray.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLActor.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderUtilities.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkSmartPointer.h"
+#include "vtkTetMesh.h"
+#include "vtkTetMeshBuilder.h"
+#include "vtkTetMeshCompactLayout.h"
+#include "vtkTetMeshLayout.h"
+#include "vtkTetMeshPaperLayout.h"
+#include "vtkTetMeshValidationReport.h"
+#include "vtkTextureObject.h"
+#include "vtkTiledRayCastOcclusionQueries.h"
+#include "vtkTiledRayCastPreIntegrationTable.h"
+#include "vtkTiledRayCastResourceFreeCallback.h"
+#include "vtkTiledRayCastStatistics.h"
+#include "vtkTiledRayCastTransferFunction.h"
+#include "vtkTimerLog.h"
+#include "vtkUnstructuredGridBase.h"
+#include "vtkUnstructuredGridPartialPreIntegration.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtk_glew.h"
+
+#include "vtkTiledRayCastBoundaryFaceFS.h"
+#include "vtkTiledRayCastBoundaryFaceVS.h"
+#include "vtkTiledRayCastCommonFS.h"
+#include "vtkTiledRayCastCompactLayout.h"
+#include "vtkTiledRayCastCompositeFS.h"
+#include "vtkTiledRayCastCopyFS.h"
+#include "vtkTiledRayCastCountFS.h"
+#include "vtkTiledRayCastNearSliceFS.h"
+#include "vtkTiledRayCastNearSliceGS.h"
+#include "vtkTiledRayCastNearSliceVS.h"
+#include "vtkTiledRayCastPaperLayout.h"
+#include "vtkTiledRayCastPartialPreIntegration.h"
+#include "vtkTiledRayCastPreIntegration2D.h"
+#include "vtkTiledRayCastPreIntegration3D.h"
+#include "vtkTiledRayCastQuadVS.h"
+#include "vtkTiledRayCastTraversalFS.h"
+
+#include <algorithm>
+#include <array>
+#include <memory>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
+
+namespace
+{
+// Ray status codes, as in vtkTiledRayCastCommonFS.glsl.
+enum RayStatus
+{
+  StatusMiss = 0,
+  StatusActive = 1,
+  StatusWaiting = 2,
+  StatusDoneDepth = 3,
+  StatusDoneOpaque = 4
+};
+
+// GPU phases timed separately.
+enum Phase
+{
+  PhaseFirstHit = 0,
+  PhasePeeling,
+  PhaseRayCasting,
+  PhaseCompositing,
+  NumberOfPhases
+};
+
+// The depth at which tile rectangles are drawn: halfway, so that the early-z marks of the
+// Z-update pass (0 for finished rays, 1 for active ones) cull or pass them.
+const float RectangleDepth = 0.0f; // NDC, window depth 0.5
+
+// A name in GL debuggers (apitrace, RenderDoc) around a phase of the render.
+class ScopedDebugEvent
+{
+public:
+  explicit ScopedDebugEvent(const char* name)
+    : Name(name)
+  {
+    vtkOpenGLRenderUtilities::MarkDebugEvent(std::string("vtkOpenGLTiledRayCastVolumeMapper::") +
+      this->Name + " begin");
+  }
+  ~ScopedDebugEvent()
+  {
+    vtkOpenGLRenderUtilities::MarkDebugEvent(std::string("vtkOpenGLTiledRayCastVolumeMapper::") +
+      this->Name + " end");
+  }
+  ScopedDebugEvent(const ScopedDebugEvent&) = delete;
+  void operator=(const ScopedDebugEvent&) = delete;
+
+private:
+  const char* Name;
+};
+
+// A column-major float copy of a row-major double 4x4 matrix, as GLSL's mat4 expects.
+void ToColumnMajor(const double m[16], float out[16])
+{
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
+    }
+  }
+}
+
+// A screen tile, in pixels of the viewport.
+struct Tile
+{
+  int X0, Y0, X1, Y1;
+  int Parity = 0;       // which of the two ping-pong target sets holds its latest state
+  int Passes = 0;       // ray-casting passes run this frame
+  bool Running = false; // still has rays to advance in the current layer
+  unsigned int LastQuery = 0;     // latest count of the tile's active rays
+  unsigned int PreviousQuery = 0; // the count before it
+};
+
+// Per-frame geometry: how pixels map to object-space rays, computed in double precision.
+struct FrameGeometry
+{
+  float RayOrigin[3][3];
+  float RayDir[3][3];
+  float WNear[3];
+  float WFar[3];
+  float LambdaNear = 0;
+  float ObjectToWorld[9];
+  double ObjectToWorldNorm = 1; // bounds how much the volume's matrix stretches lengths
+  float ObjectToClip[16];
+  float NearPlane[4];
+  bool NearPlaneCutsMesh = false;
+  bool Mirrored = false;
+  bool Valid = false;
+};
+
+// A program of the window's shader cache (the cache owns it) and the empty vertex array every
+// draw of the mapper binds: vertices are generated from gl_VertexID.
+struct Program
+{
+  vtkShaderProgram* Shader = nullptr;
+  vtkNew<vtkOpenGLVertexArrayObject> VAO;
+  std::string Key;
+
+  void Release(vtkWindow*)
+  {
+    this->Shader = nullptr;
+    this->VAO->ReleaseGraphicsResources();
+    this->Key.clear();
+  }
+};
+
+// GPU time of a phase that runs in several pieces (ray casting and peeling interleave).
+class PhaseTimer
+{
+public:
+  void Start()
+  {
+    if (this->Used == this->Segments.size())
+    {
+      this->Segments.emplace_back(new vtkOpenGLRenderTimer);
+    }
+    this->Segments[this->Used]->Start();
+  }
+  void Stop() { this->Segments[this->Used++]->Stop(); }
+  bool Ready() const
+  {
+    for (size_t i = 0; i < this->Used; ++i)
+    {
+      if (!this->Segments[i]->Ready())
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  // Waits for the results when they are not there yet.
+  double GetMilliseconds()
+  {
+    double ms = 0;
+    for (size_t i = 0; i < this->Used; ++i)
+    {
+      ms += this->Segments[i]->GetElapsedMilliseconds();
+    }
+    return ms;
+  }
+  void Reset() { this->Used = 0; }
+  void ReleaseGraphicsResources()
+  {
+    for (auto& t : this->Segments)
+    {
+      t->ReleaseGraphicsResources();
+    }
+    this->Segments.clear();
+    this->Used = 0;
+  }
+
+private:
+  std::vector<std::unique_ptr<vtkOpenGLRenderTimer>> Segments;
+  size_t Used = 0;
+};
+
+// A mesh array on the GPU.
+struct MeshTexture
+{
+  std::string Uniform;
+  vtkNew<vtkOpenGLBufferObject> Buffer;
+  vtkNew<vtkTextureObject> Texture;
+  vtkIdType Bytes = 0;
+};
+
+std::string Substituted(std::string source, const std::vector<std::pair<std::string, std::string>>& replacements)
+{
+  for (const auto& r : replacements)
+  {
+    vtkShaderProgram::Substitute(source, r.first, r.second, true);
+  }
+  return source;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals
+{
+public:
+  explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
+    : Self(self)
+  {
+  }
+
+  vtkOpenGLTiledRayCastVolumeMapper* Self;
+
+  // Context: checked once per window.
+  vtkOpenGLRenderWindow* CheckedWindow = nullptr;
+  bool ContextUsable = false;
+  std::string ContextError;
+  std::string VersionHeader;
+  int MaxTextureSize = 0;
+  int MaxTextureBufferSize = 0;
+  int Max3DTextureSize = 0;
+
+  // CPU mesh and its GPU layout.
+  vtkNew<vtkTetMeshBuilder> Builder;
+  vtkSmartPointer<vtkTetMeshLayout> Layout;
+  int LayoutKind = -1;
+  vtkMTimeType LayoutMeshTime = 0;
+  vtkMTimeType ReportedTime = 0;
+  std::vector<MeshTexture*> MeshTextures;
+  vtkNew<vtkOpenGLBufferObject> FaceBuffer;
+  vtkNew<vtkTextureObject> FaceTexture;
+  vtkIdType NumberOfFaces = 0;
+  vtkIdType NumberOfTets = 0;
+  vtkMTimeType UploadedLayoutTime = 0;
+  vtkIdType MeshBytes = 0;
+  bool HasCellScalars = false;
+  double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
+  double Shift[3] = { 0, 0, 0 };
+  double ScalarRange[2] = { 0, 1 };
+  double LongestEdge = 0;
+
+  // Transfer function.
+  vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
+  vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
+  vtkNew<vtkOpenGLBufferObject> NodeBuffer;
+  vtkNew<vtkTextureObject> NodeTexture;
+  vtkNew<vtkTextureObject> PsiTexture;
+  vtkNew<vtkTextureObject> TableTexture;
+  vtkMTimeType UploadedNodesTime = 0;
+  vtkMTimeType UploadedTableTime = 0;
+  int UploadedTableMode = -1;
+  vtkIdType TransferFunctionBytes = 0;
+
+  // Render targets: two ping-pong sets of (state, colour, entry) and a shared depth buffer.
+  vtkNew<vtkTextureObject> State[2];
+  vtkNew<vtkTextureObject> Color[2];
+  vtkNew<vtkTextureObject> Entry[2];
+  vtkNew<vtkTextureObject> Depth;
+  vtkNew<vtkTextureObject> OpaqueDepth;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer[2];
+  int TargetSize[2] = { 0, 0 };
+
+  // Programs.
+  Program FirstHit, Peel, NearSlice, Traversal, Copy, Count, Composite;
+
+  // Queries and timers.
+  vtkTiledRayCastOcclusionQueries Queries;
+  PhaseTimer PhaseTimers[NumberOfPhases];
+  PhaseTimer TotalTimer;
+  bool TimersPending = false;
+  unsigned int NearPlaneQuery = 0;
+
+  // Warnings given once.
+  bool WarnedTranslucentGeometry = false;
+  bool WarnedBlendMode = false;
+  std::string LastError;
+
+  // This frame.
+  FrameGeometry Geometry;
+  std::vector<Tile> Tiles;
+  // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
+  // them when that count was zero.
+  struct PassBlock
+  {
+    size_t TileIndex;
+    unsigned int Condition;
+    int Passes;
+  };
+  std::vector<PassBlock> PassBlocks;
+  int Viewport[4] = { 0, 0, 0, 0 };
+
+  void ReportError(const std::string& message);
+  bool CheckContext(vtkOpenGLRenderWindow* window);
+  bool UpdateMesh(vtkDataSet* input);
+  bool UploadMesh(vtkOpenGLRenderWindow* window);
+  bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
+  bool UpdatePrograms(vtkOpenGLRenderWindow* window);
+  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  void ComputeGeometry(vtkRenderer* ren, vtkVolume* vol);
+  void MakeTiles();
+  void ReadTimers(bool wait);
+
+  void ActivateTextures(bool activate);
+  vtkShaderProgram* Use(vtkOpenGLRenderWindow* window, Program& program);
+  void SetFrameUniforms(vtkShaderProgram* program);
+  void SetMeshUniforms(vtkShaderProgram* program);
+  void SetIntegrationUniforms(vtkShaderProgram* program);
+  void SetTargetUniforms(vtkShaderProgram* program, int parity);
+  void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
+  void DrawViewport(Program& program);
+
+  void BindTargets(vtkOpenGLState* state, int parity, bool allOutputs);
+  bool RenderFirstHit(vtkOpenGLRenderWindow* window);
+  unsigned int Peel(vtkOpenGLRenderWindow* window);
+  void RayCastLayer(vtkOpenGLRenderWindow* window);
+  void CountActiveRays(vtkOpenGLRenderWindow* window, Tile& tile);
+  void CopyTile(vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive);
+  void MakeTilesIdentical(vtkOpenGLRenderWindow* window);
+  void Composite(vtkOpenGLRenderWindow* window);
+  void FinishStatistics();
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+  void ClearMeshTextures();
+};
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::string& message)
+{
+  // The same error every frame would flood the output: say it once until it changes.
+  if (message != this->LastError)
+  {
+    vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+    vtkErrorWithObjectMacro(self, << message);
+    this->LastError = message;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRenderWindow* window)
+{
+  if (window == this->CheckedWindow)
+  {
+    return this->ContextUsable;
+  }
+  this->CheckedWindow = window;
+  this->ContextUsable = false;
+  int major = 0, minor = 0;
+  window->GetOpenGLVersion(major, minor);
+  if (major > 3 || (major == 3 && minor >= 3))
+  {
+    this->VersionHeader = "#version 330 core\n";
+  }
+  else if (major == 3 && minor == 2 && GLEW_ARB_shader_bit_encoding &&
+    GLEW_ARB_explicit_attrib_location)
+  {
+    // GLSL 1.50 with the two extensions the shaders need: bit casts of floats (tet ids kept in
+    // float render targets) and explicit output locations (several render targets).
+    this->VersionHeader = "#version 150\n"
+                          "#extension GL_ARB_shader_bit_encoding : require\n"
+                          "#extension GL_ARB_explicit_attrib_location : require\n";
+  }
+  else
+  {
+    std::ostringstream msg;
+    msg << "The OpenGL context (version " << major << "." << minor
+        << ") lacks what tiled ray casting needs: OpenGL 3.3, or 3.2 with "
+           "GL_ARB_shader_bit_encoding and GL_ARB_explicit_attrib_location. Nothing is drawn.";
+    this->ContextError = msg.str();
+    return false;
+  }
+  window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_SIZE, &this->MaxTextureSize);
+  window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &this->MaxTextureBufferSize);
+  window->GetState()->vtkglGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &this->Max3DTextureSize);
+  this->ContextUsable = true;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* input)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTetMeshBuilder* builder = this->Builder;
+  builder->SetScalarMode(self->GetScalarMode());
+  builder->SetArrayAccessMode(self->GetArrayAccessMode());
+  builder->SetArrayId(self->ArrayId);
+  builder->SetArrayName(self->ArrayName);
+  builder->SetVectorMode(self->GetVectorMode());
+  builder->SetVectorComponent(self->GetVectorComponent());
+
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkTetMesh* mesh = builder->Build(input);
+  timer->StopTimer();
+
+  vtkTetMeshValidationReport* report = builder->GetReport();
+  if (report->GetMTime() > this->ReportedTime)
+  {
+    self->ValidationReport->DeepCopy(report);
+    this->ReportedTime = report->GetMTime();
+    if (report->GetUsable() && report->HasDefects())
+    {
+      vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
+    }
+  }
+  if (!mesh || !report->GetUsable())
+  {
+    this->ReportError(std::string("Cannot render the input: ") + report->GetErrorMessage());
+    return false;
+  }
+
+  // The layout the user asked for; rebuilt when the kind or the mesh changed, cheaply when
+  // only the points moved.
+  const int kind = self->GetMeshLayout();
+  bool rebuilt = false;
+  if (kind != this->LayoutKind || !this->Layout)
+  {
+    if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
+    {
+      vtkNew<vtkTetMeshPaperLayout> paper;
+      paper->SetTextureWidth(std::min(this->MaxTextureSize, 8192));
+      this->Layout = paper;
+    }
+    else
+    {
+      this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
+    }
+    this->LayoutKind = kind;
+    this->LayoutMeshTime = 0;
+  }
+  if (mesh->GetMTime() > this->LayoutMeshTime)
+  {
+    timer->StartTimer();
+    if (!this->Layout->Build(mesh))
+    {
+      this->ReportError("Cannot pack the mesh for the GPU: see the previous error.");
+      return false;
+    }
+    timer->StopTimer();
+    this->LayoutMeshTime = mesh->GetMTime();
+    rebuilt = true;
+  }
+  self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
+
+  if (rebuilt)
+  {
+    this->NumberOfTets = mesh->GetNumberOfTetrahedra();
+    this->NumberOfFaces = mesh->GetNumberOfBoundaryFaces();
+    this->HasCellScalars = mesh->GetHasCellScalars();
+    mesh->GetShift(this->Shift);
+    double bounds[6];
+    mesh->GetBounds(bounds);
+    for (int i = 0; i < 6; ++i)
+    {
+      this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
+    }
+    mesh->GetScalarRange(this->ScalarRange);
+    this->LongestEdge = mesh->GetLongestEdge();
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ClearMeshTextures()
+{
+  for (MeshTexture* t : this->MeshTextures)
+  {
+    t->Texture->ReleaseGraphicsResources(this->CheckedWindow);
+    t->Buffer->ReleaseGraphicsResources();
+    delete t;
+  }
+  this->MeshTextures.clear();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRenderWindow* window)
+{
+  vtkTetMeshLayout* layout = this->Layout;
+  if (layout->GetMTime() <= this->UploadedLayoutTime && !this->MeshTextures.empty())
+  {
+    return true; // nothing changed: only the camera moved
+  }
+
+  // Check every array against the GPU's limits before touching the GPU.
+  const int n = layout->GetNumberOfArrays();
+  for (int i = 0; i < n; ++i)
+  {
+    vtkDataArray* array = layout->GetArray(i);
+    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TEXTURE_BUFFER)
+    {
+      if (array->GetNumberOfTuples() > this->MaxTextureBufferSize)
+      {
+        std::ostringstream msg;
+        msg << "The mesh (" << this->NumberOfTets << " tetrahedra) needs a texture buffer of "
+            << array->GetNumberOfTuples() << " texels for '" << layout->GetArrayName(i)
+            << "', more than this GPU's GL_MAX_TEXTURE_BUFFER_SIZE (" << this->MaxTextureBufferSize
+            << "). Nothing is drawn.";
+        this->ReportError(msg.str());
+        return false;
+      }
+    }
+    else
+    {
+      int size[2];
+      layout->GetArrayTextureSize(i, size);
+      if (size[0] > this->MaxTextureSize || size[1] > this->MaxTextureSize)
+      {
+        std::ostringstream msg;
+        msg << "The mesh (" << this->NumberOfTets << " tetrahedra) needs a " << size[0] << " x "
+            << size[1] << " texture for '" << layout->GetArrayName(i)
+            << "' in the paper layout, more than this GPU's GL_MAX_TEXTURE_SIZE ("
+            << this->MaxTextureSize << "). Use the compact layout. Nothing is drawn.";
+        this->ReportError(msg.str());
+        return false;
+      }
+    }
+  }
+  if (this->NumberOfFaces * 3 > this->MaxTextureBufferSize)
+  {
+    this->ReportError("The mesh has more boundary faces than this GPU's "
+                      "GL_MAX_TEXTURE_BUFFER_SIZE allows. Nothing is drawn.");
+    return false;
+  }
+
+  vtkOpenGLClearErrorMacro();
+  vtkIdType uploaded = 0;
+  const bool sameArrays = static_cast<int>(this->MeshTextures.size()) == n;
+  if (!sameArrays)
+  {
+    this->ClearMeshTextures();
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    if (!sameArrays)
+    {
+      this->MeshTextures.push_back(new MeshTexture);
+    }
+    MeshTexture* t = this->MeshTextures[i];
+    vtkDataArray* array = layout->GetArray(i);
+    if (sameArrays && array->GetMTime() <= this->UploadedLayoutTime)
+    {
+      continue; // e.g. only the points moved: topology stays on the GPU
+    }
+    t->Uniform = std::string("in_") + layout->GetArrayName(i);
+    const int comps = array->GetNumberOfComponents();
+    const bool isFloat = array->GetDataType() == VTK_FLOAT;
+    static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
+    static const unsigned int uintFormats[5] = { 0, GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI };
+    if (comps < 1 || comps > 4 || comps == 3 ||
+      (!isFloat && array->GetDataType() != VTK_TYPE_UINT32))
+    {
+      this->ReportError("Internal error: a mesh layout array of an unsupported type.");
+      return false;
+    }
+    const vtkIdType bytes = array->GetNumberOfValues() * array->GetDataTypeSize();
+    t->Texture->SetContext(window);
+    t->Texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
+    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TEXTURE_BUFFER)
+    {
+      t->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+      if (isFloat)
+      {
+        t->Buffer->Upload(static_cast<const float*>(array->GetVoidPointer(0)),
+          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
+      }
+      else
+      {
+        t->Buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(0)),
+          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
+      }
+      t->Texture->CreateTextureBuffer(static_cast<unsigned int>(array->GetNumberOfTuples()), comps,
+        isFloat ? VTK_FLOAT : VTK_UNSIGNED_INT, t->Buffer);
+    }
+    else
+    {
+      int size[2];
+      layout->GetArrayTextureSize(i, size);
+      t->Texture->SetFormat(comps == 4 ? GL_RGBA : GL_RED);
+      t->Texture->SetDataType(GL_FLOAT);
+      t->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      t->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      t->Texture->Create2DFromRaw(size[0], size[1], comps, VTK_FLOAT, array->GetVoidPointer(0));
+    }
+    t->Bytes = bytes;
+    uploaded += bytes;
+  }
+
+  // Boundary faces, (tet << 2) | face, drawn without a vertex buffer.
+  vtkTetMesh* mesh = this->Builder->GetMesh();
+  if (!sameArrays || mesh->GetMTime() > this->UploadedLayoutTime)
+  {
+    this->FaceBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+    this->FaceBuffer->Upload(mesh->GetBoundaryFaces(), static_cast<size_t>(this->NumberOfFaces),
+      vtkOpenGLBufferObject::TextureBuffer);
+    this->FaceTexture->SetContext(window);
+    this->FaceTexture->SetInternalFormat(GL_R32UI);
+    this->FaceTexture->CreateTextureBuffer(
+      static_cast<unsigned int>(this->NumberOfFaces), 1, VTK_UNSIGNED_INT, this->FaceBuffer);
+    uploaded += this->NumberOfFaces * 4;
+  }
+  if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    this->ReportError("The GPU ran out of memory while uploading the mesh. Nothing is drawn.");
+    this->ClearMeshTextures();
+    return false;
+  }
+
+  this->MeshBytes = this->NumberOfFaces * 4;
+  for (MeshTexture* t : this->MeshTextures)
+  {
+    this->MeshBytes += t->Bytes;
+  }
+  this->UploadedLayoutTime = std::max(layout->GetMTime(), mesh->GetMTime());
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
+  vtkVolumeProperty* property, vtkOpenGLRenderWindow* window)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  this->TransferFunction->Update(property, this->ScalarRange);
+
+  vtkIdType uploaded = 0;
+  const int mode = self->GetIntegrationMode();
+  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  {
+    if (this->TransferFunction->GetMTime() > this->UploadedNodesTime)
+    {
+      const std::vector<float>& texels = this->TransferFunction->GetNodeTexels();
+      this->NodeBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+      this->NodeBuffer->Upload(texels, vtkOpenGLBufferObject::TextureBuffer);
+      this->NodeTexture->SetContext(window);
+      this->NodeTexture->SetInternalFormat(GL_RGBA32F);
+      this->NodeTexture->CreateTextureBuffer(
+        static_cast<unsigned int>(texels.size() / 4), 4, VTK_FLOAT, this->NodeBuffer);
+      this->UploadedNodesTime = this->TransferFunction->GetMTime();
+      uploaded += static_cast<vtkIdType>(texels.size() * sizeof(float));
+    }
+    if (!this->PsiTexture->GetHandle())
+    {
+      // Moreland and Angel's Psi: the same static table as VTK's partial pre-integration.
+      vtkUnstructuredGridPartialPreIntegration::BuildPsiTable();
+      int size = 0;
+      float* psi = vtkUnstructuredGridPartialPreIntegration::GetPsiTable(size);
+      this->PsiTexture->SetContext(window);
+      this->PsiTexture->SetInternalFormat(GL_R32F);
+      this->PsiTexture->SetFormat(GL_RED);
+      this->PsiTexture->SetDataType(GL_FLOAT);
+      this->PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
+      this->PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      this->PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+      this->PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+      // The table is indexed [front][back]; texture rows are t, columns s: s = back, t = front.
+      this->PsiTexture->Create2DFromRaw(size, size, 1, VTK_FLOAT, psi);
+      uploaded += static_cast<vtkIdType>(size) * size * 4;
+    }
+    this->TransferFunctionBytes = static_cast<vtkIdType>(
+      this->TransferFunction->GetNodeTexels().size() * sizeof(float) + 512 * 512 * 4);
+    stats->SetPreIntegrationTableSize(0, 0, 0);
+  }
+  else
+  {
+    // A table of the whole transfer function, at the resolution it needs, within the GPU's
+    // limits; rebuilt only when the transfer function, the lengths or the mode changed.
+    vtkTiledRayCastPreIntegrationTable* table = this->Table;
+    table->SetDimension(mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D ? 3 : 2);
+    table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
+    table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
+    table->SetMaximumSize(mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
+        ? this->Max3DTextureSize
+        : this->MaxTextureSize);
+    table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
+    table->Update(property, this->TransferFunction, this->ScalarRange);
+    if (table->GetMTime() > this->UploadedTableTime || mode != this->UploadedTableMode)
+    {
+      int size[3];
+      table->GetSize(size);
+      vtkTextureObject* tex = this->TableTexture;
+      tex->ReleaseGraphicsResources(window);
+      tex->SetContext(window);
+      tex->SetInternalFormat(GL_RGBA32F);
+      tex->SetFormat(GL_RGBA);
+      tex->SetDataType(GL_FLOAT);
+      tex->SetMinificationFilter(vtkTextureObject::Linear);
+      tex->SetMagnificationFilter(vtkTextureObject::Linear);
+      tex->SetWrapS(vtkTextureObject::ClampToEdge);
+      tex->SetWrapT(vtkTextureObject::ClampToEdge);
+      tex->SetWrapR(vtkTextureObject::ClampToEdge);
+      float* data = table->GetTable();
+      bool ok = table->GetDimension() == 3
+        ? tex->Create3DFromRaw(size[0], size[1], size[2], 4, VTK_FLOAT, data)
+        : tex->Create2DFromRaw(size[0], size[1], 4, VTK_FLOAT, data);
+      if (!ok)
+      {
+        this->ReportError("Cannot create the pre-integration table texture. Nothing is drawn.");
+        return false;
+      }
+      this->UploadedTableTime = table->GetMTime();
+      this->UploadedTableMode = mode;
+      uploaded += table->GetNumberOfBytes();
+    }
+    this->TransferFunctionBytes = table->GetNumberOfBytes();
+    int size[3];
+    table->GetSize(size);
+    stats->SetPreIntegrationTableSize(size);
+  }
+  timer->StopTimer();
+  stats->SetTransferFunctionBuildTime(timer->GetElapsedTime());
+  stats->SetNumberOfTransferFunctionNodes(this->TransferFunction->GetNumberOfNodes());
+  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
+  vtkOpenGLRenderWindow* window)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  const bool paper = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  const int mode = self->GetIntegrationMode();
+
+  std::string layoutCode = paper ? vtkTiledRayCastPaperLayout : vtkTiledRayCastCompactLayout;
+  if (!paper && this->HasCellScalars)
+  {
+    // Cell scalars: constant per tet, the field has no gradient.
+    vtkShaderProgram::Substitute(
+      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_tetScalars;");
+    vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
+      "float cellScalar = texelFetch(in_tetScalars, int(tet)).r;\n"
+      "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
+  }
+  const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
+    ? vtkTiledRayCastPreIntegration3D
+    : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D ? vtkTiledRayCastPreIntegration2D
+                                                              : vtkTiledRayCastPartialPreIntegration);
+  const std::vector<std::pair<std::string, std::string>> common = {
+    { "//TRC::Version", this->VersionHeader },
+    { "//TRC::Common::Dec", vtkTiledRayCastCommonFS },
+    { "//TRC::Layout::Dec", layoutCode },
+    { "//TRC::Integration::Dec", integration },
+  };
+  const std::string peelDec = "uniform sampler2D in_previousState;\n"
+                              "uniform sampler2D in_previousEntry;\n"
+                              "uniform float in_peelEpsilon;\n";
+  const std::string peelImpl =
+    "ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
+    "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
+    "  if (trcStatus(previous) != TRC_WAITING || lambda < previous.y - in_peelEpsilon)\n"
+    "  {\n    discard;\n  }\n"
+    "  vec2 lastEntry = texelFetch(in_previousEntry, pixel, 0).xy;\n"
+    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= floatBitsToUint(lastEntry.y))\n"
+    "  {\n    discard;\n  }\n"
+    "  lambda = max(lambda, previous.y);\n";
+
+  struct Spec
+  {
+    Program* Target;
+    const char* VS;
+    const char* GS;
+    const char* FS;
+    bool Peel;
+  };
+  const Spec specs[] = {
+    { &this->FirstHit, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
+      false },
+    { &this->Peel, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS, true },
+    { &this->NearSlice, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
+      vtkTiledRayCastNearSliceFS, false },
+    { &this->Traversal, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
+    { &this->Copy, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCopyFS, false },
+    { &this->Count, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCountFS, false },
+    { &this->Composite, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCompositeFS, false },
+  };
+  for (const Spec& spec : specs)
+  {
+    std::vector<std::pair<std::string, std::string>> replacements = common;
+    replacements.emplace_back("//TRC::Peel::Dec", spec.Peel ? peelDec : std::string());
+    replacements.emplace_back("//TRC::Peel::Impl", spec.Peel ? peelImpl : std::string());
+    const std::string vs = Substituted(spec.VS, replacements);
+    const std::string fs = Substituted(spec.FS, replacements);
+    const std::string gs = spec.GS ? Substituted(spec.GS, replacements) : std::string();
+    const std::string key = vs + fs + gs;
+    if (key == spec.Target->Key && spec.Target->Shader)
+    {
+      continue;
+    }
+    vtkShaderProgram* shader =
+      window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+    if (!shader || !shader->GetCompiled())
+    {
+      this->ReportError("A shader of the tiled ray caster failed to compile or link; see the "
+                        "shader log above. Nothing is drawn.");
+      spec.Target->Shader = nullptr;
+      return false;
+    }
+    if (shader != spec.Target->Shader)
+    {
+      spec.Target->Shader = shader;
+      spec.Target->VAO->ShaderProgramChanged();
+    }
+    spec.Target->Key = key;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
+  vtkOpenGLRenderWindow* window, int width, int height)
+{
+  if (width == this->TargetSize[0] && height == this->TargetSize[1] &&
+    this->Framebuffer[0]->GetFBOIndex() != 0)
+  {
+    return true;
+  }
+  vtkOpenGLState* ostate = window->GetState();
+  auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps) {
+    tex->SetContext(window);
+    tex->SetInternalFormat(internal);
+    tex->SetFormat(format);
+    tex->SetDataType(GL_FLOAT);
+    tex->SetMinificationFilter(vtkTextureObject::Nearest);
+    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
+    tex->SetWrapS(vtkTextureObject::ClampToEdge);
+    tex->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (tex->GetHandle() && tex->GetWidth() > 0)
+    {
+      tex->Resize(width, height);
+      return true;
+    }
+    return tex->Allocate2D(width, height, comps, VTK_FLOAT);
+  };
+  bool ok = true;
+  for (int q = 0; q < 2; ++q)
+  {
+    ok = ok && setup(this->State[q], GL_RGBA32F, GL_RGBA, 4);
+    ok = ok && setup(this->Color[q], GL_RGBA32F, GL_RGBA, 4);
+    ok = ok && setup(this->Entry[q], GL_RG32F, GL_RG, 2);
+  }
+  for (vtkTextureObject* depth : { this->Depth.Get(), this->OpaqueDepth.Get() })
+  {
+    depth->SetContext(window);
+    depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    if (depth->GetHandle() && depth->GetWidth() > 0)
+    {
+      depth->Resize(width, height);
+    }
+    else
+    {
+      ok = ok && depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+    }
+  }
+  if (!ok)
+  {
+    this->ReportError("Cannot allocate the ray-casting render targets. Nothing is drawn.");
+    return false;
+  }
+  ostate->PushFramebufferBindings();
+  for (int q = 0; q < 2; ++q)
+  {
+    vtkOpenGLFramebufferObject* fbo = this->Framebuffer[q];
+    fbo->SetContext(window);
+    fbo->Bind();
+    fbo->AddColorAttachment(0, this->State[q]);
+    fbo->AddColorAttachment(1, this->Color[q]);
+    fbo->AddColorAttachment(2, this->Entry[q]);
+    fbo->AddDepthAttachment(this->Depth);
+    fbo->ActivateDrawBuffers(3);
+    if (!fbo->CheckFrameBufferStatus(GL_FRAMEBUFFER))
+    {
+      ok = false;
+    }
+  }
+  ostate->PopFramebufferBindings();
+  if (!ok)
+  {
+    this->ReportError("The ray-casting framebuffer is incomplete on this GPU. Nothing is drawn.");
+    return false;
+  }
+  this->TargetSize[0] = width;
+  this->TargetSize[1] = height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ComputeGeometry(
+  vtkRenderer* ren, vtkVolume* vol)
+{
+  FrameGeometry& g = this->Geometry;
+  g.Valid = false;
+  const double aspect = ren->GetTiledAspectRatio();
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkMatrix4x4* worldToClip = camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
+
+  // Shifted object coordinates (those of the GPU layout) to clip coordinates, in double.
+  vtkNew<vtkMatrix4x4> shift;
+  for (int i = 0; i < 3; ++i)
+  {
+    shift->SetElement(i, 3, this->Shift[i]);
+  }
+  vtkNew<vtkMatrix4x4> objectToWorld;
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), shift, objectToWorld);
+  vtkNew<vtkMatrix4x4> objectToClip;
+  vtkMatrix4x4::Multiply4x4(worldToClip, objectToWorld, objectToClip);
+  vtkNew<vtkMatrix4x4> clipToObject;
+  vtkMatrix4x4::Invert(objectToClip, clipToObject);
+  ToColumnMajor(objectToClip->GetData(), g.ObjectToClip);
+
+  double linear[3][3];
+  double norm = 0;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear[r][c] = vol->GetMatrix()->GetElement(r, c);
+      g.ObjectToWorld[3 * c + r] = static_cast<float>(linear[r][c]);
+      norm += linear[r][c] * linear[r][c];
+    }
+  }
+  g.ObjectToWorldNorm = std::sqrt(norm);
+  g.Mirrored = vtkMath::Determinant3x3(linear) < 0;
+
+  // Near and far points of the rays through NDC (0,0), (1,0) and (0,1): both are affine in
+  // NDC for VTK's perspective and parallel cameras, and so are the clip-space w's.
+  auto unproject = [&](double x, double y, double z, double q[3], double& w) {
+    double h[4] = { x, y, z, 1.0 };
+    clipToObject->MultiplyPoint(h, h);
+    for (int i = 0; i < 3; ++i)
+    {
+      q[i] = h[i] / h[3];
+    }
+    w = 1.0 / h[3];
+  };
+  double nearPt[3][3], farPt[3][3], wn[3], wf[3];
+  const double corners[3][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 } };
+  for (int k = 0; k < 3; ++k)
+  {
+    unproject(corners[k][0], corners[k][1], -1.0, nearPt[k], wn[k]);
+    unproject(corners[k][0], corners[k][1], 1.0, farPt[k], wf[k]);
+  }
+  double dir[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      dir[k][i] = farPt[k][i] - nearPt[k][i];
+    }
+  }
+  // lambda = 0 where the central ray passes closest to the mesh centre (the origin of the
+  // shifted coordinates), so that lambda stays small where the mesh is.
+  const double d2 = vtkMath::Dot(dir[0], dir[0]);
+  double muCentre = d2 > 0 ? -vtkMath::Dot(nearPt[0], dir[0]) / d2 : 0.0;
+  muCentre = std::min(std::max(muCentre, 0.0), 1.0);
+  g.LambdaNear = static_cast<float>(-muCentre);
+  for (int i = 0; i < 3; ++i)
+  {
+    const double o0 = nearPt[0][i] + muCentre * dir[0][i];
+    const double ox = nearPt[1][i] + muCentre * dir[1][i] - o0;
+    const double oy = nearPt[2][i] + muCentre * dir[2][i] - o0;
+    g.RayOrigin[0][i] = static_cast<float>(o0);
+    g.RayOrigin[1][i] = static_cast<float>(ox);
+    g.RayOrigin[2][i] = static_cast<float>(oy);
+    g.RayDir[0][i] = static_cast<float>(dir[0][i]);
+    g.RayDir[1][i] = static_cast<float>(dir[1][i] - dir[0][i]);
+    g.RayDir[2][i] = static_cast<float>(dir[2][i] - dir[0][i]);
+  }
+  g.WNear[0] = static_cast<float>(wn[0]);
+  g.WNear[1] = static_cast<float>(wn[1] - wn[0]);
+  g.WNear[2] = static_cast<float>(wn[2] - wn[0]);
+  g.WFar[0] = static_cast<float>(wf[0]);
+  g.WFar[1] = static_cast<float>(wf[1] - wf[0]);
+  g.WFar[2] = static_cast<float>(wf[2] - wf[0]);
+
+  // The near plane, positive on the camera's side of nothing: beyond it, towards the scene.
+  double ex[3], ey[3], normal[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    ex[i] = nearPt[1][i] - nearPt[0][i];
+    ey[i] = nearPt[2][i] - nearPt[0][i];
+  }
+  vtkMath::Cross(ex, ey, normal);
+  if (vtkMath::Dot(normal, dir[0]) < 0)
+  {
+    for (double& v : normal)
+    {
+      v = -v;
+    }
+  }
+  vtkMath::Normalize(normal);
+  const double offset = -vtkMath::Dot(normal, nearPt[0]);
+  for (int i = 0; i < 3; ++i)
+  {
+    g.NearPlane[i] = static_cast<float>(normal[i]);
+  }
+  g.NearPlane[3] = static_cast<float>(offset);
+  // Only when the near plane cuts the mesh's bounds can a ray start inside the mesh.
+  bool below = false, above = false;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[3] = { this->MeshBounds[c & 1], this->MeshBounds[2 + ((c >> 1) & 1)],
+      this->MeshBounds[4 + ((c >> 2) & 1)] };
+    const double d = vtkMath::Dot(normal, p) + offset;
+    below = below || d < 0;
+    above = above || d > 0;
+  }
+  g.NearPlaneCutsMesh = below && above;
+  g.Valid = std::isfinite(g.RayDir[0][0]) && std::isfinite(g.RayOrigin[0][0]);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
+{
+  const int w = this->TargetSize[0];
+  const int h = this->TargetSize[1];
+  const int size = this->Self->GetTileSize() > 0 ? this->Self->GetTileSize() : std::max(w, h);
+  this->Tiles.clear();
+  for (int y = 0; y < h; y += size)
+  {
+    for (int x = 0; x < w; x += size)
+    {
+      Tile t;
+      t.X0 = x;
+      t.Y0 = y;
+      t.X1 = std::min(x + size, w);
+      t.Y1 = std::min(y + size, h);
+      this->Tiles.push_back(t);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
+{
+  if (!this->TimersPending)
+  {
+    return;
+  }
+  if (!wait)
+  {
+    if (!this->TotalTimer.Ready())
+    {
+      return;
+    }
+    for (const PhaseTimer& t : this->PhaseTimers)
+    {
+      if (!t.Ready())
+      {
+        return;
+      }
+    }
+  }
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  stats->SetFirstHitTime(this->PhaseTimers[PhaseFirstHit].GetMilliseconds());
+  stats->SetPeelingTime(this->PhaseTimers[PhasePeeling].GetMilliseconds());
+  stats->SetRayCastingTime(this->PhaseTimers[PhaseRayCasting].GetMilliseconds());
+  stats->SetCompositingTime(this->PhaseTimers[PhaseCompositing].GetMilliseconds());
+  stats->SetTotalGPUTime(this->TotalTimer.GetMilliseconds());
+  this->TimersPending = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool activate)
+{
+  std::vector<vtkTextureObject*> textures;
+  for (MeshTexture* t : this->MeshTextures)
+  {
+    textures.push_back(t->Texture);
+  }
+  textures.push_back(this->FaceTexture);
+  textures.push_back(this->OpaqueDepth);
+  for (int q = 0; q < 2; ++q)
+  {
+    textures.push_back(this->State[q]);
+    textures.push_back(this->Color[q]);
+    textures.push_back(this->Entry[q]);
+  }
+  const int mode = this->Self->GetIntegrationMode();
+  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  {
+    textures.push_back(this->NodeTexture);
+    textures.push_back(this->PsiTexture);
+  }
+  else
+  {
+    textures.push_back(this->TableTexture);
+  }
+  for (vtkTextureObject* t : textures)
+  {
+    if (activate)
+    {
+      t->Activate();
+    }
+    else
+    {
+      t->Deactivate();
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShaderProgram* p)
+{
+  const FrameGeometry& g = this->Geometry;
+  const float viewport[2] = { static_cast<float>(this->TargetSize[0]),
+    static_cast<float>(this->TargetSize[1]) };
+  p->SetUniform2f("in_viewportSize", viewport);
+  p->SetUniform3f("in_rayOrigin0", g.RayOrigin[0]);
+  p->SetUniform3f("in_rayOriginX", g.RayOrigin[1]);
+  p->SetUniform3f("in_rayOriginY", g.RayOrigin[2]);
+  p->SetUniform3f("in_rayDir0", g.RayDir[0]);
+  p->SetUniform3f("in_rayDirX", g.RayDir[1]);
+  p->SetUniform3f("in_rayDirY", g.RayDir[2]);
+  p->SetUniform3f("in_wNear", g.WNear);
+  p->SetUniform3f("in_wFar", g.WFar);
+  p->SetUniformf("in_lambdaNear", g.LambdaNear);
+  p->SetUniformMatrix3x3("in_objectToWorld", const_cast<float*>(g.ObjectToWorld));
+  p->SetUniformMatrix4x4("in_objectToClip", const_cast<float*>(g.ObjectToClip));
+  p->SetUniform4f("in_nearPlane", g.NearPlane);
+  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth->GetTextureUnit());
+  p->SetUniformf("in_earlyTerminationOpacity",
+    static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderProgram* p)
+{
+  for (MeshTexture* t : this->MeshTextures)
+  {
+    p->SetUniformi(t->Uniform.c_str(), t->Texture->GetTextureUnit());
+  }
+  p->SetUniformi("in_boundaryFaces", this->FaceTexture->GetTextureUnit());
+  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Layout))
+  {
+    p->SetUniformi("in_paperWidth", paper->GetTextureWidth());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
+{
+  const int mode = this->Self->GetIntegrationMode();
+  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  {
+    p->SetUniformi("in_transferFunction", this->NodeTexture->GetTextureUnit());
+    p->SetUniformi("in_transferFunctionNodes", this->TransferFunction->GetNumberOfNodes());
+    p->SetUniformi("in_psiTable", this->PsiTexture->GetTextureUnit());
+    p->SetUniformf("in_psiTableSize", static_cast<float>(this->PsiTexture->GetWidth()));
+    return;
+  }
+  vtkTiledRayCastPreIntegrationTable* table = this->Table;
+  int size[3];
+  table->GetSize(size);
+  double range[2];
+  table->GetScalarRange(range);
+  const float scalarMap[3] = { static_cast<float>(range[0]),
+    static_cast<float>(range[1] > range[0] ? (size[0] - 1) / (range[1] - range[0]) : 0.0),
+    static_cast<float>(size[0]) };
+  p->SetUniformi("in_preIntegrationTable", this->TableTexture->GetTextureUnit());
+  p->SetUniform3f("in_tableScalarMap", scalarMap);
+  if (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D)
+  {
+    const double longest = table->GetMaximumLength();
+    const float lengthMap[3] = { static_cast<float>(longest > 0 ? (size[2] - 1) / longest : 0.0),
+      static_cast<float>(size[2]), static_cast<float>(longest > 0 ? longest : 1e30) };
+    p->SetUniform3f("in_tableLengthMap", lengthMap);
+  }
+  else
+  {
+    p->SetUniformf("in_tableReferenceLength", static_cast<float>(table->GetReferenceLength()));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetTargetUniforms(
+  vtkShaderProgram* p, int parity)
+{
+  p->SetUniformi("in_state", this->State[parity]->GetTextureUnit());
+  p->SetUniformi("in_color", this->Color[parity]->GetTextureUnit());
+  p->SetUniformi("in_entry", this->Entry[parity]->GetTextureUnit());
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
+  Program& program, int x0, int y0, int x1, int y1)
+{
+  const float w = static_cast<float>(this->TargetSize[0]);
+  const float h = static_cast<float>(this->TargetSize[1]);
+  const float rect[4] = { 2.0f * x0 / w - 1.0f, 2.0f * y0 / h - 1.0f, 2.0f * x1 / w - 1.0f,
+    2.0f * y1 / h - 1.0f };
+  program.Shader->SetUniform4f("in_rectangle", rect);
+  program.Shader->SetUniformf("in_rectangleDepth", RectangleDepth);
+  program.VAO->Bind();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawViewport(Program& program)
+{
+  this->DrawRectangle(program, 0, 0, this->TargetSize[0], this->TargetSize[1]);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(
+  vtkOpenGLState* state, int parity, bool allOutputs)
+{
+  this->Framebuffer[parity]->Bind(GL_DRAW_FRAMEBUFFER);
+  // Boundary-face passes write the state and the entry but leave the colour alone.
+  unsigned int buffers[3] = { GL_COLOR_ATTACHMENT0,
+    allOutputs ? static_cast<unsigned int>(GL_COLOR_ATTACHMENT1) : static_cast<unsigned int>(GL_NONE),
+    GL_COLOR_ATTACHMENT2 };
+  state->vtkglDrawBuffers(3, buffers);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(
+  vtkOpenGLRenderWindow* window)
+{
+  ScopedDebugEvent event("FirstHit");
+  vtkOpenGLState* state = window->GetState();
+
+  // Both target sets start as "no ray" (all zero), so that a tile the GPU skips because it has
+  // no ray is the same in both, whatever its parity.
+  state->vtkglClearColor(0.f, 0.f, 0.f, 0.f);
+  state->vtkglClearDepth(1.0);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  for (int q = 1; q >= 0; --q)
+  {
+    this->BindTargets(state, q, true);
+    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
+  this->BindTargets(state, 0, false);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+
+  if (this->Geometry.NearPlaneCutsMesh)
+  {
+    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
+    state->vtkglDisable(GL_CULL_FACE);
+    this->SetFrameUniforms(this->Use(window, this->NearSlice));
+    this->SetMeshUniforms(this->NearSlice.Shader);
+    this->NearSlice.VAO->Bind();
+    this->NearPlaneQuery = this->Queries.Begin();
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->NumberOfTets));
+    this->Queries.End();
+  }
+
+  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
+  this->SetFrameUniforms(this->Use(window, this->FirstHit));
+  this->SetMeshUniforms(this->FirstHit.Shader);
+  this->FirstHit.VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
+  return true;
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRenderWindow* window)
+{
+  ScopedDebugEvent event("Peel");
+  vtkOpenGLState* state = window->GetState();
+
+  // The peel reads set 0 and writes set 1 where a ray re-enters: make both sets hold the same
+  // state first (per tile, from whichever set is current).
+  this->MakeTilesIdentical(window);
+
+  this->BindTargets(state, 1, false);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_LESS);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
+  vtkShaderProgram* p = this->Use(window, this->Peel);
+  this->SetFrameUniforms(p);
+  this->SetMeshUniforms(p);
+  p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
+  p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
+  p->SetUniformf("in_peelEpsilon", 2e-6f);
+  this->Peel.VAO->Bind();
+  const unsigned int query = this->Queries.Begin();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  this->Queries.End();
+  // Whether another layer exists decides what to draw next: this read waits for the GPU, once
+  // per layer (as VTK's dual depth peeling does).
+  const unsigned int reentered = this->Queries.GetResult(query);
+  for (Tile& tile : this->Tiles)
+  {
+    tile.Parity = 1;
+  }
+  vtkOpenGLCheckErrorMacro("failed after a peeling pass");
+  return reentered;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Use(
+  vtkOpenGLRenderWindow* window, Program& program)
+{
+  window->GetShaderCache()->ReadyShaderProgram(program.Shader);
+  return program.Shader;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CopyTile(
+  vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive)
+{
+  // Copies the tile's current set to the other set and flips its parity. As a Z-update it also
+  // writes depth 0 for rays that are no longer active (later passes skip them) and 1 for the
+  // others; the caller sets the depth test.
+  vtkShaderProgram* copy = this->Use(window, this->Copy);
+  this->BindTargets(window->GetState(), 1 - tile.Parity, true);
+  this->SetTargetUniforms(copy, tile.Parity);
+  copy->SetUniformi("in_markInactive", markInactive ? 1 : 0);
+  this->DrawRectangle(this->Copy, tile.X0, tile.Y0, tile.X1, tile.Y1);
+  tile.Parity = 1 - tile.Parity;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTilesIdentical(
+  vtkOpenGLRenderWindow* window)
+{
+  // After a copy from the current set to the other, both sets hold the same state.
+  vtkOpenGLState* state = window->GetState();
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  for (Tile& tile : this->Tiles)
+  {
+    this->CopyTile(window, tile, false);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CountActiveRays(
+  vtkOpenGLRenderWindow* window, Tile& tile)
+{
+  vtkOpenGLState* state = window->GetState();
+  vtkShaderProgram* count = this->Use(window, this->Count);
+  count->SetUniformi("in_statusMask", 1 << StatusActive);
+  this->SetTargetUniforms(count, tile.Parity);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  tile.LastQuery = this->Queries.Begin();
+  this->DrawRectangle(this->Count, tile.X0, tile.Y0, tile.X1, tile.Y1);
+  this->Queries.End();
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  stats->SetNumberOfOcclusionQueries(stats->GetNumberOfOcclusionQueries() + 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRenderWindow* window)
+{
+  ScopedDebugEvent event("RayCastLayer");
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  const int tetsPerPass = self->GetTetsPerPass();
+  const int interval = self->GetOcclusionQueryInterval();
+  const int maxPasses = self->GetMaximumNumberOfPassesPerLayer();
+
+  // No ray of this layer is marked finished yet.
+  this->BindTargets(state, 0, true);
+  state->vtkglDepthMask(GL_TRUE);
+  state->vtkglClearDepth(1.0);
+  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  state->vtkglDisable(GL_CULL_FACE);
+
+  // Count the active rays of every tile. The GPU skips the passes of a tile whose count is zero
+  // (conditional rendering), and the CPU never waits for these counts.
+  for (Tile& tile : this->Tiles)
+  {
+    tile.PreviousQuery = 0;
+    this->CountActiveRays(window, tile);
+    tile.Running = true;
+  }
+
+  vtkShaderProgram* traversal = this->Use(window, this->Traversal);
+  this->SetFrameUniforms(traversal);
+  this->SetMeshUniforms(traversal);
+  this->SetIntegrationUniforms(traversal);
+  traversal->SetUniformi("in_tetsPerPass", tetsPerPass);
+
+  if (tetsPerPass == 0)
+  {
+    // No limit on tets per pass: one pass per tile finishes every ray of the layer.
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    for (size_t i = 0; i < this->Tiles.size(); ++i)
+    {
+      Tile& tile = this->Tiles[i];
+      this->Queries.BeginConditionalRender(tile.LastQuery);
+      this->BindTargets(state, 1 - tile.Parity, true);
+      this->SetTargetUniforms(traversal, tile.Parity);
+      this->DrawRectangle(this->Traversal, tile.X0, tile.Y0, tile.X1, tile.Y1);
+      this->Queries.EndConditionalRender();
+      tile.Parity = 1 - tile.Parity;
+      this->PassBlocks.push_back({ i, tile.LastQuery, 1 });
+    }
+    return;
+  }
+
+  // The paper's scheme: rounds of k passes per running tile, each ending with a Z-update (the
+  // rays no longer active are marked in the depth buffer, so later passes skip them) and an
+  // occlusion query counting the tile's active rays. A tile stops once a count of zero comes
+  // back. Counts are polled without waiting; the passes issued meanwhile for a tile that is in
+  // fact done are skipped by the GPU, which also leaves both of its target sets identical.
+  bool anyRunning = true;
+  while (anyRunning)
+  {
+    anyRunning = false;
+    for (size_t i = 0; i < this->Tiles.size(); ++i)
+    {
+      Tile& tile = this->Tiles[i];
+      if (!tile.Running)
+      {
+        continue;
+      }
+      // Stop once a count of zero is known. The latest count is polled; if it is not there yet,
+      // the one of the round before (issued a whole round of other tiles ago) is waited for, so
+      // at most one round is issued that the GPU may skip.
+      if (this->Queries.IsAvailable(tile.LastQuery))
+      {
+        if (this->Queries.GetResult(tile.LastQuery) == 0)
+        {
+          tile.Running = false;
+          continue;
+        }
+      }
+      else if (tile.PreviousQuery && this->Queries.GetResult(tile.PreviousQuery) == 0)
+      {
+        tile.Running = false;
+        continue;
+      }
+      if (tile.Passes >= maxPasses)
+      {
+        vtkWarningWithObjectMacro(self, << "A tile reached " << maxPasses
+                                        << " ray-casting passes in one layer and was stopped; "
+                                           "the mesh's neighbour links may loop.");
+        tile.Running = false;
+        continue;
+      }
+      anyRunning = true;
+      this->Queries.BeginConditionalRender(tile.LastQuery);
+      this->Use(window, this->Traversal);
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDepthFunc(GL_LESS);
+      state->vtkglDepthMask(GL_FALSE);
+      for (int k = 0; k < interval; ++k)
+      {
+        this->BindTargets(state, 1 - tile.Parity, true);
+        this->SetTargetUniforms(traversal, tile.Parity);
+        this->DrawRectangle(this->Traversal, tile.X0, tile.Y0, tile.X1, tile.Y1);
+        tile.Parity = 1 - tile.Parity;
+      }
+      state->vtkglDepthMask(GL_TRUE);
+      this->CopyTile(window, tile, true);
+      this->Queries.EndConditionalRender();
+      this->PassBlocks.push_back({ i, tile.LastQuery, interval });
+      stats->SetNumberOfZUpdatePasses(stats->GetNumberOfZUpdatePasses() + 1);
+      tile.Passes += interval;
+      tile.PreviousQuery = tile.LastQuery;
+      this->CountActiveRays(window, tile);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderWindow* window)
+{
+  ScopedDebugEvent event("Composite");
+  vtkOpenGLState* state = window->GetState();
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+
+  // Bring every tile to set 0, then count the rays that became opaque.
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+  for (Tile& tile : this->Tiles)
+  {
+    if (tile.Parity == 1)
+    {
+      this->CopyTile(window, tile, false);
+    }
+  }
+  vtkShaderProgram* count = this->Use(window, this->Count);
+  count->SetUniformi("in_statusMask", 1 << StatusDoneOpaque);
+  this->SetTargetUniforms(count, 0);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  const unsigned int opaqueQuery = this->Queries.Begin();
+  this->DrawViewport(this->Count);
+  this->Queries.End();
+  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+
+  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
+  state->PopFramebufferBindings();
+  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  vtkShaderProgram* composite = this->Use(window, this->Composite);
+  this->SetTargetUniforms(composite, 0);
+  const float origin[2] = { static_cast<float>(this->Viewport[0]),
+    static_cast<float>(this->Viewport[1]) };
+  composite->SetUniform2f("in_viewportOrigin", origin);
+  const unsigned int raysQuery = this->Queries.Begin();
+  this->DrawViewport(this->Composite);
+  this->Queries.End();
+
+  stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
+  stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
+  vtkOpenGLCheckErrorMacro("failed after compositing");
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishStatistics()
+{
+  // Passes the GPU really ran: those whose tile count was not zero (all these queries are
+  // answered by now, the last peel having waited for the GPU).
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  std::vector<int> passes(this->Tiles.size(), 0);
+  vtkIdType total = 0;
+  for (const PassBlock& block : this->PassBlocks)
+  {
+    if (this->Queries.GetResult(block.Condition) > 0)
+    {
+      passes[block.TileIndex] += block.Passes;
+      total += block.Passes;
+    }
+  }
+  std::vector<int>& perTile = stats->GetPassesPerTile();
+  perTile.clear();
+  int skipped = 0;
+  for (int p : passes)
+  {
+    if (p > 0)
+    {
+      perTile.push_back(p);
+    }
+    else
+    {
+      ++skipped;
+    }
+  }
+  stats->FinishTilePasses();
+  stats->SetNumberOfRayCastPasses(total);
+  stats->SetNumberOfNearPlaneRays(
+    this->NearPlaneQuery ? this->Queries.GetResult(this->NearPlaneQuery) : 0);
+  stats->SetNumberOfTiles(static_cast<int>(this->Tiles.size()));
+  stats->SetNumberOfTilesSkipped(skipped);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->ClearMeshTextures();
+  this->FaceTexture->ReleaseGraphicsResources(window);
+  this->FaceBuffer->ReleaseGraphicsResources();
+  this->NodeTexture->ReleaseGraphicsResources(window);
+  this->NodeBuffer->ReleaseGraphicsResources();
+  this->PsiTexture->ReleaseGraphicsResources(window);
+  this->TableTexture->ReleaseGraphicsResources(window);
+  for (int q = 0; q < 2; ++q)
+  {
+    this->State[q]->ReleaseGraphicsResources(window);
+    this->Color[q]->ReleaseGraphicsResources(window);
+    this->Entry[q]->ReleaseGraphicsResources(window);
+    this->Framebuffer[q]->ReleaseGraphicsResources(window);
+  }
+  this->Depth->ReleaseGraphicsResources(window);
+  this->OpaqueDepth->ReleaseGraphicsResources(window);
+  for (Program* p : { &this->FirstHit, &this->Peel, &this->NearSlice, &this->Traversal,
+         &this->Copy, &this->Count, &this->Composite })
+  {
+    p->Release(window);
+  }
+  this->Queries.ReleaseGraphicsResources();
+  for (PhaseTimer& t : this->PhaseTimers)
+  {
+    t.ReleaseGraphicsResources();
+  }
+  this->TotalTimer.ReleaseGraphicsResources();
+  this->TimersPending = false;
+  this->TargetSize[0] = this->TargetSize[1] = 0;
+  this->UploadedLayoutTime = 0;
+  this->UploadedNodesTime = 0;
+  this->UploadedTableTime = 0;
+  this->UploadedTableMode = -1;
+  this->MeshBytes = 0;
+  this->TransferFunctionBytes = 0;
+  this->CheckedWindow = nullptr;
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLTiledRayCastVolumeMapper::vtkOpenGLTiledRayCastVolumeMapper()
+  : Impl(new vtkInternals(this))
+  , ResourceCallback(new vtkTiledRayCastResourceFreeCallback<vtkOpenGLTiledRayCastVolumeMapper>(
+      this, &vtkOpenGLTiledRayCastVolumeMapper::ReleaseGraphicsResources))
+{
+}
+
+//------------------------------------------------------------------------------
+vtkOpenGLTiledRayCastVolumeMapper::~vtkOpenGLTiledRayCastVolumeMapper()
+{
+  // Frees the GL objects in their own context, if the window still exists.
+  this->ResourceCallback->Release();
+  delete this->ResourceCallback;
+  delete this->Impl;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  // Called by users and by the window (through the callback, with the context current).
+  if (!this->ResourceCallback->IsReleasing())
+  {
+    this->ResourceCallback->Release();
+    return;
+  }
+  this->Impl->ReleaseGraphicsResources(window);
+  this->Statistics->SetMeshBytes(0);
+  this->Statistics->SetTransferFunctionBytes(0);
+  this->Statistics->SetRenderTargetBytes(0);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::IsSupported(vtkRenderWindow* window)
+{
+  vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl)
+  {
+    return false;
+  }
+  int major = 0, minor = 0;
+  gl->GetOpenGLVersion(major, minor);
+  return major > 3 || (major == 3 && minor >= 3) ||
+    (major == 3 && minor == 2 && GLEW_ARB_shader_bit_encoding &&
+      GLEW_ARB_explicit_attrib_location);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  this->Timer->StartTimer();
+  this->Statistics->ResetFrameCounts();
+  vtkInternals* impl = this->Impl;
+
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window)
+  {
+    impl->ReportError("The tiled ray-cast mapper needs an OpenGL render window.");
+    return;
+  }
+  vtkOpenGLClearErrorMacro();
+  ScopedDebugEvent event("Render");
+  this->ResourceCallback->RegisterGraphicsResources(window);
+  if (!impl->CheckContext(window))
+  {
+    impl->ReportError(impl->ContextError);
+    return;
+  }
+
+  vtkInformation* keys = vol->GetPropertyKeys();
+  if (keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride()) &&
+    !impl->WarnedTranslucentGeometry)
+  {
+    vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
+                    "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
+                    "mapper). Make that geometry opaque, or render it in another renderer.");
+    impl->WarnedTranslucentGeometry = true;
+  }
+  if (this->BlendMode != vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND)
+  {
+    impl->ReportError("Only composite blending is supported (BlendMode is " +
+      std::to_string(this->BlendMode) + "). Nothing is drawn.");
+    return;
+  }
+  vtkVolumeProperty* property = vol->GetProperty();
+  vtkUnstructuredGridBase* input = this->GetInput();
+  if (!input)
+  {
+    impl->ReportError("No input. Nothing is drawn.");
+    return;
+  }
+  if (!property)
+  {
+    impl->ReportError("The volume has no property. Nothing is drawn.");
+    return;
+  }
+
+  int width = 0, height = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &impl->Viewport[0], &impl->Viewport[1]);
+  impl->Viewport[2] = width;
+  impl->Viewport[3] = height;
+  if (width <= 0 || height <= 0)
+  {
+    return;
+  }
+
+  // CPU work: only what changed.
+  if (!impl->UpdateMesh(input))
+  {
+    return;
+  }
+  impl->ComputeGeometry(ren, vol);
+  if (!impl->Geometry.Valid)
+  {
+    impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
+    return;
+  }
+  if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
+    !impl->UpdatePrograms(window) || !impl->UpdateTargets(window, width, height))
+  {
+    return;
+  }
+  impl->LastError.clear();
+  impl->ReadTimers(this->SynchronousStatistics);
+
+  // GPU work.
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+
+  // GPU timers of the previous frame still in flight are not restarted: this frame is then not
+  // timed, and the statistics keep the latest times measured.
+  const bool timing = !impl->TimersPending;
+  auto start = [&](PhaseTimer& t) {
+    if (timing)
+    {
+      t.Start();
+    }
+  };
+  auto stop = [&](PhaseTimer& t) {
+    if (timing)
+    {
+      t.Stop();
+    }
+  };
+  if (timing)
+  {
+    impl->TotalTimer.Reset();
+    for (PhaseTimer& t : impl->PhaseTimers)
+    {
+      t.Reset();
+    }
+  }
+  start(impl->TotalTimer);
+  // The opaque geometry drawn so far ends the rays: its depth, from the caller's framebuffer.
+  impl->OpaqueDepth->CopyFromFrameBuffer(impl->Viewport[0], impl->Viewport[1], 0, 0, width, height);
+
+  state->PushFramebufferBindings();
+  state->vtkglViewport(0, 0, width, height);
+  int cullFaceMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
+  impl->ActivateTextures(true);
+  impl->Queries.Recycle();
+  impl->PassBlocks.clear();
+  impl->NearPlaneQuery = 0;
+  impl->MakeTiles();
+
+  vtkTiledRayCastStatistics* stats = this->Statistics;
+  start(impl->PhaseTimers[PhaseFirstHit]);
+  impl->RenderFirstHit(window);
+  stop(impl->PhaseTimers[PhaseFirstHit]);
+  // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
+  // a peel finds no re-entry.
+  int layers = 1;
+  int peels = 0;
+  const int maxLayers = 1 << 16;
+  while (true)
+  {
+    start(impl->PhaseTimers[PhaseRayCasting]);
+    impl->RayCastLayer(window);
+    stop(impl->PhaseTimers[PhaseRayCasting]);
+    if (layers >= maxLayers)
+    {
+      vtkWarningMacro("Stopped after " << maxLayers << " boundary layers.");
+      break;
+    }
+    start(impl->PhaseTimers[PhasePeeling]);
+    const unsigned int reentered = impl->Peel(window);
+    stop(impl->PhaseTimers[PhasePeeling]);
+    ++peels;
+    if (!reentered)
+    {
+      break;
+    }
+    ++layers;
+  }
+  start(impl->PhaseTimers[PhaseCompositing]);
+  impl->Composite(window);
+  stop(impl->PhaseTimers[PhaseCompositing]);
+  stop(impl->TotalTimer);
+  impl->TimersPending = timing;
+  state->vtkglCullFace(cullFaceMode);
+  impl->ActivateTextures(false);
+  impl->FinishStatistics();
+  if (this->SynchronousStatistics)
+  {
+    impl->ReadTimers(true);
+  }
+
+  stats->SetRendered(true);
+  stats->SetImageSize(width, height);
+  stats->SetNumberOfLayers(layers);
+  stats->SetNumberOfPeelPasses(peels);
+  stats->SetMeshBytes(impl->MeshBytes);
+  stats->SetMeshBytesPerTetrahedron(
+    impl->NumberOfTets > 0 ? static_cast<double>(impl->MeshBytes) / impl->NumberOfTets : 0.0);
+  stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
+  // Per pixel: two sets of state (16 B), colour (16 B) and entry (8 B), plus two depth buffers.
+  stats->SetRenderTargetBytes(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 8) + 8));
+  vtkOpenGLCheckErrorMacro("failed after Render");
+
+  this->Timer->StopTimer();
+  this->TimeToDraw = this->Timer->GetElapsedTime();
+  stats->SetRenderTime(this->TimeToDraw);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

@@ -1,0 +1,155 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastPreIntegrationTable.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastPreIntegrationTable.h"
+
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkSMPTools.h"
+#include "vtkTetRayIntegrator.h"
+#include "vtkTiledRayCastTransferFunction.h"
+#include "vtkVolumeProperty.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkTiledRayCastPreIntegrationTable);
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastPreIntegrationTable::vtkTiledRayCastPreIntegrationTable() = default;
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastPreIntegrationTable::~vtkTiledRayCastPreIntegrationTable() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
+  vtkTiledRayCastTransferFunction* transferFunction, const double scalarRange[2])
+{
+  if (!property || !transferFunction)
+  {
+    vtkErrorMacro("No volume property or transfer function.");
+    return false;
+  }
+  // The node list changes whenever the property's functions or the scalar range change.
+  const vtkMTimeType source = std::max(transferFunction->GetMTime(), property->GetMTime());
+  int size[3];
+  const double width = scalarRange[1] - scalarRange[0];
+  const int cap = std::min(this->Dimension == 3 ? 256 : 1024, this->MaximumSize);
+  if (this->RequestedScalarSize > 0)
+  {
+    size[0] = std::min(this->RequestedScalarSize, this->MaximumSize);
+  }
+  else
+  {
+    const double feature = transferFunction->GetNarrowestFeature();
+    const double wanted = width > 0 && feature > 0 ? 2.0 * width / feature + 1.0 : 2.0;
+    size[0] = static_cast<int>(std::min<double>(cap, std::max(32.0, std::ceil(wanted))));
+  }
+  size[0] = std::max(size[0], 2);
+  size[1] = size[0];
+  size[2] = this->Dimension == 3
+    ? std::max(2, std::min(this->RequestedLengthSize > 0 ? this->RequestedLengthSize : 64,
+                    this->MaximumSize))
+    : 1;
+  if (this->BuiltFrom == source && this->BuiltTime >= this->GetMTime() &&
+    std::equal(size, size + 3, this->Size) && this->Range[0] == scalarRange[0] &&
+    this->Range[1] == scalarRange[1] && !this->Table.empty())
+  {
+    return true;
+  }
+
+  vtkNew<vtkTetRayIntegrator> integrator;
+  if (!integrator->Initialize(property))
+  {
+    vtkErrorMacro("Cannot integrate the volume property's transfer functions.");
+    return false;
+  }
+  std::copy(size, size + 3, this->Size);
+  this->Range[0] = scalarRange[0];
+  this->Range[1] = scalarRange[1];
+  const int n = size[0];
+  const int nl = size[2];
+  const double maxLength = this->MaximumLength;
+  const double reference = this->ReferenceLength;
+  const bool is3D = this->Dimension == 3;
+  this->Table.assign(static_cast<size_t>(n) * n * nl * 4, 0.0f);
+  float* table = this->Table.data();
+  const double lo = scalarRange[0];
+  // One (front, back) row of lengths per work item.
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n, [&](vtkIdType begin, vtkIdType end) {
+    double rgba[4];
+    for (vtkIdType fb = begin; fb < end; ++fb)
+    {
+      const int front = static_cast<int>(fb % n);
+      const int back = static_cast<int>(fb / n);
+      const double sf = lo + width * front / (n - 1);
+      const double sb = lo + width * back / (n - 1);
+      for (int l = 0; l < nl; ++l)
+      {
+        const double length = is3D ? maxLength * l / (nl - 1) : reference;
+        integrator->Integrate(sf, sb, length, rgba);
+        float* entry = table + 4 * ((static_cast<size_t>(l) * n + back) * n + front);
+        for (int c = 0; c < 4; ++c)
+        {
+          entry[c] = static_cast<float>(rgba[c]);
+        }
+      }
+    }
+  });
+  this->BuiltFrom = source;
+  this->Modified();
+  this->BuiltTime = this->GetMTime();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastPreIntegrationTable::GetSize(int size[3]) const
+{
+  std::copy(this->Size, this->Size + 3, size);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastPreIntegrationTable::GetScalarRange(double range[2]) const
+{
+  range[0] = this->Range[0];
+  range[1] = this->Range[1];
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastPreIntegrationTable::GetEntry(
+  int front, int back, int length, double rgba[4]) const
+{
+  const int n = this->Size[0];
+  if (front < 0 || back < 0 || length < 0 || front >= n || back >= n || length >= this->Size[2])
+  {
+    rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0;
+    return;
+  }
+  const float* entry =
+    this->Table.data() + 4 * ((static_cast<size_t>(length) * n + back) * n + front);
+  for (int c = 0; c < 4; ++c)
+  {
+    rgba[c] = entry[c];
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Dimension: " << this->Dimension << "\n";
+  os << indent << "Size: " << this->Size[0] << " " << this->Size[1] << " " << this->Size[2]
+     << "\n";
+  os << indent << "ScalarRange: " << this->Range[0] << " " << this->Range[1] << "\n";
+  os << indent << "MaximumLength: " << this->MaximumLength << "\n";
+  os << indent << "ReferenceLength: " << this->ReferenceLength << "\n";
+  os << indent << "RequestedScalarSize: " << this->RequestedScalarSize << "\n";
+  os << indent << "RequestedLengthSize: " << this->RequestedLengthSize << "\n";
+}

@@ -1,0 +1,132 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastPreIntegrationTable.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastPreIntegrationTable
+ * @brief   pre-integrated segment colours for the table-driven integration modes
+ *
+ * The premultiplied colour and opacity of a ray segment as a function of its front scalar,
+ * back scalar and (3D) world length, or of its two scalars for one reference length (2D), as in
+ * Bernardon et al. (2004) after Engel et al. (2001). Every entry is computed with the exact
+ * segment integrator (vtkTetRayIntegrator), in parallel; the GPU interpolates between entries,
+ * which is where the error of these modes comes from.
+ *
+ * The resolution along the scalar axes follows the transfer function unless set: grid points
+ * at most half the narrowest transfer-function feature apart over the data's scalar range,
+ * within [32, 256] for 3D and [32, 1024] for 2D and the GPU's texture size. The length axis
+ * (3D) has 64 entries by default, from 0 to the longest segment possible (the longest edge of
+ * the mesh in world units). Rebuilt by Update() only when something it depends on changed.
+ */
+
+#ifndef vtkTiledRayCastPreIntegrationTable_h
+#define vtkTiledRayCastPreIntegrationTable_h
+
+#include "vtkObject.h"
+#include "vtkRenderingTiledRayCastModule.h" // For export macro
+
+#include <vector> // For std::vector
+
+class vtkTiledRayCastTransferFunction;
+class vtkVolumeProperty;
+
+class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTiledRayCastPreIntegrationTable : public vtkObject
+{
+public:
+  static vtkTiledRayCastPreIntegrationTable* New();
+  vtkTypeMacro(vtkTiledRayCastPreIntegrationTable, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * 3 for a (front, back, length) table, 2 for a (front, back) table at ReferenceLength.
+   */
+  vtkSetClampMacro(Dimension, int, 2, 3);
+  vtkGetMacro(Dimension, int);
+  ///@}
+
+  ///@{
+  /**
+   * Requested resolutions (0: automatic) and the largest texture side the GPU accepts.
+   */
+  vtkSetClampMacro(RequestedScalarSize, int, 0, 4096);
+  vtkGetMacro(RequestedScalarSize, int);
+  vtkSetClampMacro(RequestedLengthSize, int, 0, 1024);
+  vtkGetMacro(RequestedLengthSize, int);
+  vtkSetClampMacro(MaximumSize, int, 2, VTK_INT_MAX);
+  vtkGetMacro(MaximumSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * World lengths: the longest segment a ray can have in one tetrahedron (3D), and the length
+   * of the 2D table.
+   */
+  vtkSetMacro(MaximumLength, double);
+  vtkGetMacro(MaximumLength, double);
+  vtkSetMacro(ReferenceLength, double);
+  vtkGetMacro(ReferenceLength, double);
+  ///@}
+
+  /**
+   * Recompute the table if the property, the transfer function, the scalar range or a setting
+   * changed. Returns false (with an error) when the property cannot be integrated.
+   */
+  bool Update(vtkVolumeProperty* property, vtkTiledRayCastTransferFunction* transferFunction,
+    const double scalarRange[2]);
+
+  /**
+   * Resolution: scalar (front), scalar (back), length (1 for 2D).
+   */
+  void GetSize(int size[3]) const;
+
+  /**
+   * The scalar range the grid spans (grid point i at min + i (max - min) / (size - 1)).
+   */
+  void GetScalarRange(double range[2]) const;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The table, RGBA float, front scalar fastest, then back scalar, then length.
+   */
+  float* GetTable() { return this->Table.data(); }
+#endif
+
+  /**
+   * Premultiplied RGBA of table entry (front, back, length) (for tests).
+   */
+  void GetEntry(int front, int back, int length, double rgba[4]) const;
+
+  vtkIdType GetNumberOfBytes() const
+  {
+    return static_cast<vtkIdType>(this->Table.size() * sizeof(float));
+  }
+
+protected:
+  vtkTiledRayCastPreIntegrationTable();
+  ~vtkTiledRayCastPreIntegrationTable() override;
+
+  int Dimension = 3;
+  int RequestedScalarSize = 0;
+  int RequestedLengthSize = 0;
+  int MaximumSize = 2048;
+  double MaximumLength = 1.0;
+  double ReferenceLength = 1.0;
+  int Size[3] = { 0, 0, 0 };
+  double Range[2] = { 0, 1 };
+  std::vector<float> Table;
+  vtkMTimeType BuiltFrom = 0;
+  vtkMTimeType BuiltTime = 0;
+
+private:
+  vtkTiledRayCastPreIntegrationTable(const vtkTiledRayCastPreIntegrationTable&) = delete;
+  void operator=(const vtkTiledRayCastPreIntegrationTable&) = delete;
+};
+
+#endif

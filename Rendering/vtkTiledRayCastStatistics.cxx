@@ -1,0 +1,131 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastStatistics.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastStatistics.h"
+
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+#include <sstream>
+
+vtkStandardNewMacro(vtkTiledRayCastStatistics);
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastStatistics::vtkTiledRayCastStatistics() = default;
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastStatistics::~vtkTiledRayCastStatistics() = default;
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStatistics::ResetFrameCounts()
+{
+  this->Rendered = false;
+  this->ImageSize[0] = this->ImageSize[1] = 0;
+  this->NumberOfRays = 0;
+  this->NumberOfLayers = 0;
+  this->NumberOfPeelPasses = 0;
+  this->NumberOfNearPlaneRays = 0;
+  this->NumberOfTiles = 0;
+  this->NumberOfTilesSkipped = 0;
+  this->NumberOfRayCastPasses = 0;
+  this->MinimumPassesPerTile = 0;
+  this->MedianPassesPerTile = 0;
+  this->MaximumPassesPerTile = 0;
+  this->NumberOfZUpdatePasses = 0;
+  this->NumberOfOcclusionQueries = 0;
+  this->NumberOfRaysTerminatedEarly = 0;
+  this->MeshBuildTime = 0;
+  this->TransferFunctionBuildTime = 0;
+  this->RenderTime = 0;
+  this->UploadedBytes = 0;
+  this->PassesPerTile.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStatistics::FinishTilePasses()
+{
+  std::vector<int>& passes = this->PassesPerTile;
+  if (passes.empty())
+  {
+    this->MinimumPassesPerTile = this->MaximumPassesPerTile = 0;
+    this->MedianPassesPerTile = 0;
+    return;
+  }
+  std::vector<int> sorted(passes);
+  std::sort(sorted.begin(), sorted.end());
+  const size_t n = sorted.size();
+  this->MinimumPassesPerTile = sorted.front();
+  this->MaximumPassesPerTile = sorted.back();
+  this->MedianPassesPerTile =
+    n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + static_cast<double>(sorted[n / 2]));
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastStatistics::GetSummary() const
+{
+  std::ostringstream text;
+  if (!this->Rendered)
+  {
+    text << "nothing rendered";
+    return text.str();
+  }
+  text << this->ImageSize[0] << "x" << this->ImageSize[1] << " px, " << this->NumberOfRays
+       << " rays, " << this->NumberOfLayers << " layers (" << this->NumberOfPeelPasses
+       << " peel passes), " << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped
+       << " skipped), " << this->NumberOfRayCastPasses << " ray-casting passes (per tile min "
+       << this->MinimumPassesPerTile << ", median " << this->MedianPassesPerTile << ", max "
+       << this->MaximumPassesPerTile << "), " << this->NumberOfRaysTerminatedEarly
+       << " rays terminated early; GPU ms: first hit " << this->FirstHitTime << ", peeling "
+       << this->PeelingTime << ", ray casting " << this->RayCastingTime << ", compositing "
+       << this->CompositingTime << ", total " << this->TotalGPUTime << "; GPU memory "
+       << this->GetTotalGPUBytes() << " B (mesh " << this->MeshBytes << " B, "
+       << this->MeshBytesPerTetrahedron << " B/tet)";
+  return text.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Rendered: " << this->Rendered << "\n";
+  os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
+  os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
+  os << indent << "NumberOfPeelPasses: " << this->NumberOfPeelPasses << "\n";
+  os << indent << "NumberOfNearPlaneRays: " << this->NumberOfNearPlaneRays << "\n";
+  os << indent << "NumberOfTiles: " << this->NumberOfTiles << "\n";
+  os << indent << "NumberOfTilesSkipped: " << this->NumberOfTilesSkipped << "\n";
+  os << indent << "NumberOfRayCastPasses: " << this->NumberOfRayCastPasses << "\n";
+  os << indent << "MinimumPassesPerTile: " << this->MinimumPassesPerTile << "\n";
+  os << indent << "MedianPassesPerTile: " << this->MedianPassesPerTile << "\n";
+  os << indent << "MaximumPassesPerTile: " << this->MaximumPassesPerTile << "\n";
+  os << indent << "NumberOfZUpdatePasses: " << this->NumberOfZUpdatePasses << "\n";
+  os << indent << "NumberOfOcclusionQueries: " << this->NumberOfOcclusionQueries << "\n";
+  os << indent << "NumberOfRaysTerminatedEarly: " << this->NumberOfRaysTerminatedEarly << "\n";
+  os << indent << "FirstHitTime: " << this->FirstHitTime << "\n";
+  os << indent << "PeelingTime: " << this->PeelingTime << "\n";
+  os << indent << "RayCastingTime: " << this->RayCastingTime << "\n";
+  os << indent << "CompositingTime: " << this->CompositingTime << "\n";
+  os << indent << "TotalGPUTime: " << this->TotalGPUTime << "\n";
+  os << indent << "MeshBuildTime: " << this->MeshBuildTime << "\n";
+  os << indent << "TransferFunctionBuildTime: " << this->TransferFunctionBuildTime << "\n";
+  os << indent << "RenderTime: " << this->RenderTime << "\n";
+  os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
+  os << indent << "MeshBytes: " << this->MeshBytes << "\n";
+  os << indent << "MeshBytesPerTetrahedron: " << this->MeshBytesPerTetrahedron << "\n";
+  os << indent << "TransferFunctionBytes: " << this->TransferFunctionBytes << "\n";
+  os << indent << "RenderTargetBytes: " << this->RenderTargetBytes << "\n";
+  os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes
+     << "\n";
+  os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize[0] << " "
+     << this->PreIntegrationTableSize[1] << " " << this->PreIntegrationTableSize[2] << "\n";
+}

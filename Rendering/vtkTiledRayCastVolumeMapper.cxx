@@ -1,0 +1,78 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeMapper.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastVolumeMapper.h"
+
+#include "vtkObjectFactory.h"
+#include "vtkTetMeshValidationReport.h"
+#include "vtkTiledRayCastStatistics.h"
+
+// The OpenGL implementation comes through the object factory.
+vtkAbstractObjectFactoryNewMacro(vtkTiledRayCastVolumeMapper);
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastVolumeMapper::vtkTiledRayCastVolumeMapper()
+  : Statistics(vtkTiledRayCastStatistics::New())
+  , ValidationReport(vtkTetMeshValidationReport::New())
+{
+}
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastVolumeMapper::~vtkTiledRayCastVolumeMapper()
+{
+  this->Statistics->Delete();
+  this->ValidationReport->Delete();
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString()
+{
+  switch (this->IntegrationMode)
+  {
+    case PRE_INTEGRATION_3D:
+      return "PreIntegration3D";
+    case PRE_INTEGRATION_2D:
+      return "PreIntegration2D";
+    default:
+      return "PartialPreIntegration";
+  }
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTiledRayCastVolumeMapper::GetMeshLayoutAsString()
+{
+  return this->MeshLayout == PAPER_LAYOUT ? "Paper" : "Compact";
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
+  os << indent << "MeshLayout: " << this->GetMeshLayoutAsString() << "\n";
+  os << indent << "TetsPerPass: " << this->TetsPerPass << "\n";
+  os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";
+  os << indent << "TileSize: " << this->TileSize << "\n";
+  os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
+  os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer
+     << "\n";
+  os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
+     << "\n";
+  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize
+     << "\n";
+  os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize
+     << "\n";
+  os << indent << "SynchronousStatistics: " << this->SynchronousStatistics << "\n";
+  os << indent << "Statistics:\n";
+  this->Statistics->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ValidationReport:\n";
+  this->ValidationReport->PrintSelf(os, indent.GetNextIndent());
+}

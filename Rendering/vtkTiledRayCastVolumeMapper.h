@@ -1,0 +1,257 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeMapper.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastVolumeMapper
+ * @brief   GPU volume rendering of tetrahedral meshes: tiled ray casting with depth peeling
+ *
+ * A drop-in vtkUnstructuredGridVolumeMapper that renders a vtkUnstructuredGrid on the GPU inside
+ * VTK's own render window, after Bernardon, Pagot, Comba and Silva, "GPU-based Tiled Ray Casting
+ * using Depth Peeling" (2004), on today's OpenGL:
+ *
+ * - the mesh is packed once into textures (a compact layout of point and neighbour indices, or
+ *   the paper's 144-byte layout) and re-uploaded only when the data changes;
+ * - a first-hit pass rasterises the mesh's boundary faces and starts one ray per pixel in the
+ *   tetrahedron it enters (or, with the camera inside the mesh, in the one that holds the
+ *   near-plane point);
+ * - ray-casting passes over screen tiles walk every ray from tetrahedron to neighbour, up to
+ *   TetsPerPass tetrahedra per pass, integrating the transfer function along each segment
+ *   exactly the way VTK's unstructured-grid mappers define it, until the ray leaves the mesh, the
+ *   opaque geometry or the far plane stops it, or it is opaque (early ray termination);
+ * - depth peeling of the boundary finds where rays re-enter non-convex meshes, one layer at a
+ *   time and only as many layers as some ray still needs;
+ * - the result is composited into the render window, clipped by opaque geometry already drawn.
+ *
+ * The optical model is that of vtkUnstructuredGridPartialPreIntegration: the opacity transfer
+ * function divided by the scalar opacity unit distance is an attenuation coefficient per world
+ * unit, the colour is emitted in proportion to it; see docs/design.md. Only the first component
+ * of the volume property is used.
+ *
+ * After each render, GetStatistics() tells what was done (layers, passes per tile, tiles
+ * skipped, rays terminated early, GPU time per phase, GPU memory held) and
+ * GetValidationReport() what the mesh builder found in the input.
+ *
+ * This class is abstract: New() returns the OpenGL implementation through VTK's object factory
+ * (vtkOpenGLTiledRayCastVolumeMapper), as for VTK's own volume mappers.
+ */
+
+#ifndef vtkTiledRayCastVolumeMapper_h
+#define vtkTiledRayCastVolumeMapper_h
+
+#include "vtkRenderingTiledRayCastModule.h" // For export macro
+#include "vtkUnstructuredGridVolumeMapper.h"
+
+class vtkTetMeshValidationReport;
+class vtkTiledRayCastStatistics;
+
+class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTiledRayCastVolumeMapper
+  : public vtkUnstructuredGridVolumeMapper
+{
+public:
+  static vtkTiledRayCastVolumeMapper* New();
+  vtkTypeMacro(vtkTiledRayCastVolumeMapper, vtkUnstructuredGridVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * How a segment's colour and opacity are obtained from its entry scalar, exit scalar and
+   * length.
+   */
+  enum IntegrationModes
+  {
+    /**
+     * Moreland and Angel's partial pre-integration (the Psi table of
+     * vtkUnstructuredGridPartialPreIntegration), with every segment split at the transfer
+     * function's nodes: no table depends on the transfer function, so it is both the most
+     * accurate mode and the cheapest to change. The default.
+     */
+    PARTIAL_PRE_INTEGRATION = 0,
+    /**
+     * A 3D table of (entry scalar, exit scalar, length), as in the paper, computed exactly and
+     * at the resolution the transfer function needs; rebuilt when the transfer function changes.
+     */
+    PRE_INTEGRATION_3D = 1,
+    /**
+     * A 2D table of (entry scalar, exit scalar) for one reference length; other lengths are
+     * corrected in opacity. The cheapest table, the least accurate.
+     */
+    PRE_INTEGRATION_2D = 2
+  };
+
+  ///@{
+  /**
+   * The integration mode (see IntegrationModes). Default PARTIAL_PRE_INTEGRATION.
+   */
+  vtkSetClampMacro(IntegrationMode, int, PARTIAL_PRE_INTEGRATION, PRE_INTEGRATION_2D);
+  vtkGetMacro(IntegrationMode, int);
+  void SetIntegrationModeToPartialPreIntegration()
+  {
+    this->SetIntegrationMode(PARTIAL_PRE_INTEGRATION);
+  }
+  void SetIntegrationModeToPreIntegration3D() { this->SetIntegrationMode(PRE_INTEGRATION_3D); }
+  void SetIntegrationModeToPreIntegration2D() { this->SetIntegrationMode(PRE_INTEGRATION_2D); }
+  const char* GetIntegrationModeAsString();
+  ///@}
+
+  /**
+   * How the mesh is packed for the GPU.
+   */
+  enum MeshLayouts
+  {
+    /**
+     * Point indices and neighbour indices per tetrahedron plus shared point positions and
+     * scalars (about 35 bytes per tetrahedron); normals and gradients are computed on the fly.
+     * The default.
+     */
+    COMPACT_LAYOUT = 0,
+    /**
+     * The paper's layout (its Figure 8): vertices, face normals, neighbours and the scalar
+     * gradient of every tetrahedron in three RGBA32F 2D textures, 144 bytes per tetrahedron.
+     */
+    PAPER_LAYOUT = 1
+  };
+
+  ///@{
+  /**
+   * The GPU layout of the mesh (see MeshLayouts). Default COMPACT_LAYOUT.
+   */
+  vtkSetClampMacro(MeshLayout, int, COMPACT_LAYOUT, PAPER_LAYOUT);
+  vtkGetMacro(MeshLayout, int);
+  void SetMeshLayoutToCompact() { this->SetMeshLayout(COMPACT_LAYOUT); }
+  void SetMeshLayoutToPaper() { this->SetMeshLayout(PAPER_LAYOUT); }
+  const char* GetMeshLayoutAsString();
+  ///@}
+
+  ///@{
+  /**
+   * The largest number of tetrahedra a ray advances in one ray-casting pass. 1 is the paper's
+   * one-tetrahedron-per-pass ping-pong; 0 means no limit (a single pass per layer and tile).
+   * Default 0 (see docs/benchmarks.md for the measurement behind it).
+   */
+  vtkSetClampMacro(TetsPerPass, int, 0, VTK_INT_MAX);
+  vtkGetMacro(TetsPerPass, int);
+  ///@}
+
+  ///@{
+  /**
+   * Every how many ray-casting passes a tile checks whether its rays are all done (the paper's
+   * Z-update and occlusion-query passes; their results are read without stalling the pipeline).
+   * Has no effect when TetsPerPass is 0. Default 4.
+   */
+  vtkSetClampMacro(OcclusionQueryInterval, int, 1, VTK_INT_MAX);
+  vtkGetMacro(OcclusionQueryInterval, int);
+  ///@}
+
+  ///@{
+  /**
+   * The side, in pixels, of the square screen tiles that ray-casting passes run over. 0 means
+   * one tile covering the whole viewport. Default 128.
+   */
+  vtkSetClampMacro(TileSize, int, 0, VTK_INT_MAX);
+  vtkGetMacro(TileSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * A ray stops once its accumulated opacity reaches this value (early ray termination). 1
+   * disables early termination. The colour left out is at most 1 - this value. Default 0.999.
+   */
+  vtkSetClampMacro(EarlyRayTerminationOpacity, double, 0.0, 1.0);
+  vtkGetMacro(EarlyRayTerminationOpacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * A safety bound: the largest number of ray-casting passes one tile may run for one layer.
+   * Reached only by a mesh whose neighbour links loop; the tile then stops with a warning.
+   * Default 1000000.
+   */
+  vtkSetClampMacro(MaximumNumberOfPassesPerLayer, int, 1, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfPassesPerLayer, int);
+  ///@}
+
+  ///@{
+  /**
+   * How a scalar array of several components is reduced to the one scalar that is rendered:
+   * one component (VectorComponent) or the magnitude, as in vtkScalarsToColors. Defaults:
+   * COMPONENT, component 0.
+   */
+  enum VectorModes
+  {
+    MAGNITUDE = 0,
+    COMPONENT = 1
+  };
+  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
+  void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
+  vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  ///@{
+  /**
+   * Resolution of the pre-integration tables along the scalar axes (both) and along the
+   * length axis. 0 (the default) chooses them from the transfer function: fine enough for its
+   * narrowest feature, within the GPU's limits.
+   */
+  vtkSetClampMacro(PreIntegrationTableScalarSize, int, 0, 4096);
+  vtkGetMacro(PreIntegrationTableScalarSize, int);
+  vtkSetClampMacro(PreIntegrationTableLengthSize, int, 0, 1024);
+  vtkGetMacro(PreIntegrationTableLengthSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * When on, Render() waits at the end of each frame for the GPU timers, so that the
+   * statistics hold this frame's GPU times (benchmarks want this). When off (the default), the
+   * timers of a frame are read during a later frame without stalling the GPU, and the
+   * statistics hold the latest times available.
+   */
+  vtkSetMacro(SynchronousStatistics, bool);
+  vtkGetMacro(SynchronousStatistics, bool);
+  vtkBooleanMacro(SynchronousStatistics, bool);
+  ///@}
+
+  /**
+   * What the last Render() did. Never null.
+   */
+  vtkTiledRayCastStatistics* GetStatistics() { return this->Statistics; }
+
+  /**
+   * What the mesh builder found in the input at the last Render() (or Update()). Never null.
+   */
+  vtkTetMeshValidationReport* GetValidationReport() { return this->ValidationReport; }
+
+protected:
+  vtkTiledRayCastVolumeMapper();
+  ~vtkTiledRayCastVolumeMapper() override;
+
+  int IntegrationMode = PARTIAL_PRE_INTEGRATION;
+  int MeshLayout = COMPACT_LAYOUT;
+  int TetsPerPass = 0;
+  int OcclusionQueryInterval = 4;
+  int TileSize = 128;
+  double EarlyRayTerminationOpacity = 0.999;
+  int MaximumNumberOfPassesPerLayer = 1000000;
+  int VectorMode = COMPONENT;
+  int VectorComponent = 0;
+  int PreIntegrationTableScalarSize = 0;
+  int PreIntegrationTableLengthSize = 0;
+  bool SynchronousStatistics = false;
+
+  vtkTiledRayCastStatistics* Statistics;
+  vtkTetMeshValidationReport* ValidationReport;
+
+private:
+  vtkTiledRayCastVolumeMapper(const vtkTiledRayCastVolumeMapper&) = delete;
+  void operator=(const vtkTiledRayCastVolumeMapper&) = delete;
+};
+
+#endif

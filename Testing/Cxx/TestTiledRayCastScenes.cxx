@@ -1,0 +1,303 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastScenes.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Image tests of vtkTiledRayCastVolumeMapper, one scene per ctest (chosen with --scene):
+// each image is compared with the exact reference renderer within stated bounds, then with its
+// baseline through VTK's regression test. The reference check is what makes a baseline right;
+// the baseline check is what catches a change.
+#include "TiledRayCastTestScene.h"
+
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkOpenGLTiledRayCastVolumeMapper.h"
+#include "vtkPointDataToCellData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkSphereSource.h"
+#include "vtkTetMeshValidationReport.h"
+#include "vtkTiledRayCastStatistics.h"
+
+#include <cstring>
+#include <functional>
+#include <map>
+
+namespace
+{
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkTiledRayCastVolumeMapper> Mapper;
+  vtkSmartPointer<vtkUnstructuredGrid> Grid;
+  trctest::Bounds Bounds;
+  std::function<bool(Scene&)> Check; // extra assertions after rendering
+
+  bool Load(int argc, char* argv[], const char* file, double fraction = 0.05)
+  {
+    this->Grid = trctest::ReadMesh(argc, argv, file);
+    if (!this->Grid)
+    {
+      return false;
+    }
+    this->Mapper->SetInputData(this->Grid);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(trctest::MakePropertyFor(this->Grid, fraction));
+    this->Renderer->AddVolume(this->Volume);
+    this->Renderer->SetBackground(0.1, 0.1, 0.15);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(200, 200);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->ResetCamera();
+    return true;
+  }
+
+  void View(double azimuth, double elevation, double zoom = 1.0)
+  {
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->Azimuth(azimuth);
+    camera->Elevation(elevation);
+    camera->OrthogonalizeViewUp();
+    camera->Zoom(zoom);
+    this->Renderer->ResetCameraClippingRange();
+  }
+};
+
+bool Expect(bool condition, const char* what)
+{
+  if (!condition)
+  {
+    std::cerr << "check failed: " << what << "\n";
+  }
+  return condition;
+}
+
+// Every scene: which mesh, which view, which mapper settings, which bounds and checks.
+using SceneSetup = std::function<bool(Scene&, int, char*[])>;
+const std::map<std::string, SceneSetup>& Scenes()
+{
+  static const std::map<std::string, SceneSetup> scenes = {
+    { "convex",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "cube_sfepy_200k.vtu"))
+          return false;
+        s.View(30, 25);
+        s.Check = [](Scene& t) {
+          return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() == 1,
+            "a convex mesh has one boundary layer");
+        };
+        return true;
+      } },
+    { "comb",
+      [](Scene& s, int argc, char* argv[]) {
+        // An extruded comb with 6 teeth, seen across the teeth: rays enter up to 6 times.
+        if (!s.Load(argc, argv, "comb6teeth_tetgen_270k.vtu", 0.2))
+          return false;
+        s.View(90, 10);
+        s.Check = [](Scene& t) {
+          return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 4,
+            "rays across the comb's teeth re-enter the mesh several times");
+        };
+        return true;
+      } },
+    { "spx",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.View(20, 30);
+        return true;
+      } },
+    { "hollow",
+      [](Scene& s, int argc, char* argv[]) {
+        // A box with a cubic cavity: every ray through the middle leaves and re-enters.
+        if (!s.Load(argc, argv, "hollowcube_tetgen_230k.vtu", 0.1))
+          return false;
+        s.View(15, 10);
+        s.Check = [](Scene& t) {
+          return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 2,
+            "rays through the cavity re-enter");
+        };
+        return true;
+      } },
+    { "bracket",
+      [](Scene& s, int argc, char* argv[]) {
+        // Genus 9.
+        if (!s.Load(argc, argv, "bracket_tets.vtu", 0.1))
+          return false;
+        s.View(40, 30);
+        return true;
+      } },
+    { "crack",
+      [](Scene& s, int argc, char* argv[]) {
+        // The LOX post split into 5 tets per hex: its periodic seam is a crack of coincident,
+        // unshared faces that rays must cross without losing or doubling anything.
+        if (!s.Load(argc, argv, "post_tets5_classic.vtu", 0.1))
+          return false;
+        s.View(0, 60);
+        s.Check = [](Scene& t) {
+          return Expect(t.Mapper->GetValidationReport()->GetNumberOfCrackFaces() > 0,
+            "the builder reports the seam's crack faces");
+        };
+        return true;
+      } },
+    { "cellscalars",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        vtkNew<vtkPointDataToCellData> toCells;
+        toCells->SetInputData(s.Grid);
+        toCells->Update();
+        s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+        s.Mapper->SetInputData(s.Grid);
+        s.Mapper->SetScalarModeToUseCellData();
+        s.View(20, 30);
+        return true;
+      } },
+    { "geometry",
+      [](Scene& s, int argc, char* argv[]) {
+        // An opaque sphere inside the volume: rays stop at its surface.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        double center[3];
+        s.Grid->GetCenter(center);
+        vtkNew<vtkSphereSource> sphere;
+        sphere->SetCenter(center);
+        sphere->SetRadius(0.15 * s.Grid->GetLength());
+        sphere->SetThetaResolution(32);
+        sphere->SetPhiResolution(32);
+        vtkNew<vtkPolyDataMapper> sphereMapper;
+        sphereMapper->SetInputConnection(sphere->GetOutputPort());
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(sphereMapper);
+        actor->GetProperty()->SetColor(0.9, 0.9, 0.9);
+        s.Renderer->AddActor(actor);
+        s.View(20, 30);
+        return true;
+      } },
+    { "inside",
+      [](Scene& s, int argc, char* argv[]) {
+        // The camera inside a convex mesh: every ray starts in the tet holding its near-plane
+        // point.
+        if (!s.Load(argc, argv, "cube_sfepy_200k.vtu", 0.1))
+          return false;
+        vtkCamera* camera = s.Renderer->GetActiveCamera();
+        double center[3];
+        s.Grid->GetCenter(center);
+        camera->SetFocalPoint(center[0] + 1, center[1] + 0.3, center[2] + 0.2);
+        camera->SetPosition(center);
+        camera->SetViewAngle(60);
+        s.Renderer->ResetCameraClippingRange();
+        s.Check = [](Scene& t) {
+          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+          return Expect(stats->GetNumberOfNearPlaneRays() == stats->GetNumberOfRays() &&
+              stats->GetNumberOfRays() == 200 * 200,
+            "every ray starts inside the mesh");
+        };
+        return true;
+      } },
+    { "parallel",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "bluntfin_tets.vtu", 0.1))
+          return false;
+        s.Renderer->GetActiveCamera()->ParallelProjectionOn();
+        s.Renderer->ResetCamera();
+        s.View(35, 20);
+        return true;
+      } },
+    { "transformed",
+      [](Scene& s, int argc, char* argv[]) {
+        // Position, orientation and a non-uniform scale on the vtkVolume.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Volume->SetPosition(3, -2, 1);
+        s.Volume->SetOrientation(20, 35, -10);
+        s.Volume->SetScale(1.5, 0.7, 1.0);
+        s.Renderer->ResetCamera();
+        s.View(20, 30);
+        return true;
+      } },
+    { "table3d",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
+          return false;
+        s.Mapper->SetIntegrationModeToPreIntegration3D();
+        s.View(20, 50);
+        return true;
+      } },
+    { "table2d",
+      [](Scene& s, int argc, char* argv[]) {
+        if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
+          return false;
+        s.Mapper->SetIntegrationModeToPreIntegration2D();
+        s.View(20, 50);
+        return true;
+      } },
+    { "paper",
+      [](Scene& s, int argc, char* argv[]) {
+        // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
+        // queries every 4 passes and 64-pixel tiles.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Mapper->SetMeshLayoutToPaper();
+        s.Mapper->SetTetsPerPass(1);
+        s.Mapper->SetOcclusionQueryInterval(4);
+        s.Mapper->SetTileSize(64);
+        s.View(20, 30);
+        s.Check = [](Scene& t) {
+          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+          return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
+            Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&
+            Expect(stats->GetMeshBytesPerTetrahedron() >= 144, "144 bytes per tet");
+        };
+        return true;
+      } },
+  };
+  return scenes;
+}
+}
+
+int TestTiledRayCastScenes(int argc, char* argv[])
+{
+  std::string name;
+  for (int i = 1; i + 1 < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--scene"))
+    {
+      name = argv[i + 1];
+    }
+  }
+  auto it = Scenes().find(name);
+  if (it == Scenes().end())
+  {
+    std::cerr << "usage: --scene <name>; unknown scene '" << name << "'\n";
+    return EXIT_FAILURE;
+  }
+  Scene scene;
+  if (!it->second(scene, argc, argv))
+  {
+    return EXIT_FAILURE;
+  }
+  scene.Window->Render();
+  if (!vtkOpenGLTiledRayCastVolumeMapper::IsSupported(scene.Window))
+  {
+    return VTK_SKIP_RETURN_CODE;
+  }
+  bool ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "the mapper rendered");
+  ok = trctest::CheckAgainstReference(
+         scene.Window, scene.Renderer, scene.Volume, scene.Bounds, name.c_str()) &&
+    ok;
+  if (scene.Check)
+  {
+    ok = scene.Check(scene) && ok;
+  }
+  const int regression = vtkRegressionTestImageThreshold(scene.Window, 5);
+  return ok && regression == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+}
