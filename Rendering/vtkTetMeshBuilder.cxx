@@ -344,25 +344,33 @@ inline uint64_t SpreadBits3(uint64_t v)
 
 //------------------------------------------------------------------------------
 // What identifies one part of the input: the object (compared by address only, never
-// dereferenced) and its modification time. Modification times are unique across all VTK
-// objects, so a new object at a recycled address still reads as changed.
+// dereferenced), its modification time and its size. Modification times are unique across all
+// VTK objects, so a new object at a recycled address still reads as changed; the size catches
+// cells or values appended without a Modified() call (InsertNextCell does not call it).
 struct Stamp
 {
   const void* Object = nullptr;
   vtkMTimeType MTime = 0;
+  vtkIdType Size = 0;
   bool operator==(const Stamp& o) const
   {
-    return this->Object == o.Object && this->MTime == o.MTime;
+    return this->Object == o.Object && this->MTime == o.MTime && this->Size == o.Size;
   }
   bool operator!=(const Stamp& o) const { return !(*this == o); }
 };
 
-Stamp MakeStamp(vtkObject* object)
+Stamp MakeStamp(vtkObject* object, vtkIdType size = 0)
 {
   Stamp s;
   s.Object = object;
   s.MTime = object ? object->GetMTime() : 0;
+  s.Size = size;
   return s;
+}
+
+Stamp MakeStamp(vtkAbstractArray* array)
+{
+  return MakeStamp(array, array ? array->GetNumberOfValues() : 0);
 }
 }
 
@@ -420,7 +428,7 @@ public:
     if (auto* ug = vtkUnstructuredGrid::SafeDownCast(input))
     {
       vtkCellArray* cells = ug->GetCells();
-      stamps.push_back(MakeStamp(cells));
+      stamps.push_back(MakeStamp(cells, cells ? cells->GetNumberOfCells() : 0));
       if (cells)
       {
         stamps.push_back(MakeStamp(cells->GetOffsetsArray()));
@@ -436,6 +444,7 @@ public:
       Stamp s;
       s.Object = input;
       s.MTime = input->vtkObject::GetMTime();
+      s.Size = input->GetNumberOfCells();
       stamps.push_back(s);
     }
   }
@@ -443,9 +452,9 @@ public:
   static Stamp GetPointsStamp(vtkDataSet* input)
   {
     auto* pointSet = vtkPointSet::SafeDownCast(input);
-    if (pointSet)
+    if (pointSet && pointSet->GetPoints())
     {
-      return MakeStamp(pointSet->GetPoints());
+      return MakeStamp(pointSet->GetPoints(), pointSet->GetPoints()->GetNumberOfPoints());
     }
     // Implicit points (image data, rectilinear grids) belong to the topology stamp.
     return Stamp();

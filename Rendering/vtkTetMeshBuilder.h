@@ -65,6 +65,7 @@
 #ifndef vtkTetMeshBuilder_h
 #define vtkTetMeshBuilder_h
 
+#include "vtkAbstractMapper.h" // For VTK_SCALAR_MODE_* and VTK_GET_ARRAY_BY_*
 #include "vtkObject.h"
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 
