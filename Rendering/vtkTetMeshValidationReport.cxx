@@ -35,6 +35,7 @@ void vtkTetMeshValidationReport::Reset()
   this->NumberOfBoundaryFaces = 0;
   this->NumberOfSplitCells = 0;
   this->NumberOfIgnoredCells = 0;
+  this->NumberOfInvalidCells = 0;
   this->NumberOfInvertedTetrahedra = 0;
   this->NumberOfDegenerateTetrahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
@@ -64,9 +65,10 @@ void vtkTetMeshValidationReport::SetError(const std::string& message)
 bool vtkTetMeshValidationReport::HasDefects() const
 {
   return this->NumberOfSplitCells > 0 || this->NumberOfIgnoredCells > 0 ||
-    this->NumberOfInvertedTetrahedra > 0 || this->NumberOfDegenerateTetrahedra > 0 ||
-    this->NumberOfNonManifoldFaces > 0 || this->NumberOfCrackFaces > 0 ||
-    this->NumberOfDuplicatePoints > 0 || this->NumberOfNonFiniteScalars > 0;
+    this->NumberOfInvalidCells > 0 || this->NumberOfInvertedTetrahedra > 0 ||
+    this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
+    this->NumberOfNonFiniteScalars > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -88,6 +90,7 @@ std::string vtkTetMeshValidationReport::GetSummary() const
   const Item items[] = {
     { this->NumberOfSplitCells, "non-tetrahedral 3D cells split into tetrahedra" },
     { this->NumberOfIgnoredCells, "cells of dimension < 3 ignored" },
+    { this->NumberOfInvalidCells, "invalid cells (bad point ids) ignored" },
     { this->NumberOfInvertedTetrahedra, "inverted tetrahedra reoriented" },
     { this->NumberOfDegenerateTetrahedra, "degenerate (zero-volume) tetrahedra" },
     { this->NumberOfNonManifoldFaces, "non-manifold faces (shared by more than two cells)" },
@@ -119,6 +122,7 @@ void vtkTetMeshValidationReport::DeepCopy(vtkTetMeshValidationReport* other)
   this->NumberOfBoundaryFaces = other->NumberOfBoundaryFaces;
   this->NumberOfSplitCells = other->NumberOfSplitCells;
   this->NumberOfIgnoredCells = other->NumberOfIgnoredCells;
+  this->NumberOfInvalidCells = other->NumberOfInvalidCells;
   this->NumberOfInvertedTetrahedra = other->NumberOfInvertedTetrahedra;
   this->NumberOfDegenerateTetrahedra = other->NumberOfDegenerateTetrahedra;
   this->NumberOfNonManifoldFaces = other->NumberOfNonManifoldFaces;
@@ -145,6 +149,7 @@ void vtkTetMeshValidationReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfBoundaryFaces: " << this->NumberOfBoundaryFaces << "\n";
   os << indent << "NumberOfSplitCells: " << this->NumberOfSplitCells << "\n";
   os << indent << "NumberOfIgnoredCells: " << this->NumberOfIgnoredCells << "\n";
+  os << indent << "NumberOfInvalidCells: " << this->NumberOfInvalidCells << "\n";
   os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";

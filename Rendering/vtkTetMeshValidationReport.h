@@ -63,12 +63,16 @@ public:
   /**
    * Cells other than linear tetrahedra. Split cells are 3D cells (hexahedra, wedges, pyramids,
    * voxels, higher-order cells) that were split into tetrahedra; ignored cells are cells of
-   * dimension lower than 3 (vertices, lines, polygons), which hold no volume.
+   * dimension lower than 3 (vertices, lines, polygons), which hold no volume, and 3D cells of
+   * types VTK cannot split (abstract higher-order and parametric types). Invalid cells refer to
+   * point ids outside the grid or have the wrong number of points; they are ignored too.
    */
   vtkSetMacro(NumberOfSplitCells, vtkIdType);
   vtkGetMacro(NumberOfSplitCells, vtkIdType);
   vtkSetMacro(NumberOfIgnoredCells, vtkIdType);
   vtkGetMacro(NumberOfIgnoredCells, vtkIdType);
+  vtkSetMacro(NumberOfInvalidCells, vtkIdType);
+  vtkGetMacro(NumberOfInvalidCells, vtkIdType);
   ///@}
 
   ///@{
@@ -126,9 +130,9 @@ public:
   ///@}
 
   /**
-   * True when the builder found anything worth telling the user about: split or ignored cells,
-   * inverted or degenerate tetrahedra, non-manifold or crack faces, duplicate points or
-   * non-finite scalars.
+   * True when the builder found anything worth telling the user about: split, ignored or
+   * invalid cells, inverted or degenerate tetrahedra, non-manifold or crack faces, duplicate points
+   * or non-finite scalars.
    */
   bool HasDefects() const;
 
@@ -152,6 +156,7 @@ protected:
   vtkIdType NumberOfBoundaryFaces = 0;
   vtkIdType NumberOfSplitCells = 0;
   vtkIdType NumberOfIgnoredCells = 0;
+  vtkIdType NumberOfInvalidCells = 0;
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
