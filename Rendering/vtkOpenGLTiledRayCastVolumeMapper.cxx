@@ -28,6 +28,8 @@
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderer.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
@@ -247,6 +249,34 @@ std::string Substituted(std::string source, const std::vector<std::pair<std::str
   }
   return source;
 }
+// The longest edge of any tetrahedron: the longest segment a ray can have inside one.
+double ComputeLongestEdge(vtkTetMesh* mesh)
+{
+  const double* points = mesh->GetPoints();
+  const uint32_t* tets = mesh->GetTetPoints();
+  vtkSMPThreadLocal<double> longest(0.0);
+  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(), [&](vtkIdType begin, vtkIdType end) {
+    double& local = longest.Local();
+    for (vtkIdType t = begin; t < end; ++t)
+    {
+      const uint32_t* ids = tets + 4 * t;
+      for (int i = 0; i < 4; ++i)
+      {
+        for (int j = i + 1; j < 4; ++j)
+        {
+          local = std::max(local,
+            vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
+        }
+      }
+    }
+  });
+  double result = 0.0;
+  for (double v : longest)
+  {
+    result = std::max(result, v);
+  }
+  return std::sqrt(result);
+}
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -273,7 +303,7 @@ public:
   vtkNew<vtkTetMeshBuilder> Builder;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
   int LayoutKind = -1;
-  vtkMTimeType LayoutMeshTime = 0;
+  vtkMTimeType MeshTime = 0;
   vtkMTimeType ReportedTime = 0;
   std::vector<MeshTexture*> MeshTextures;
   vtkNew<vtkOpenGLBufferObject> FaceBuffer;
@@ -286,7 +316,8 @@ public:
   double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
   double Shift[3] = { 0, 0, 0 };
   double ScalarRange[2] = { 0, 1 };
-  double LongestEdge = 0;
+  double LongestEdge = 0; // in object coordinates
+  double TypicalEdge = 0; // idem
 
   // Transfer function.
   vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
@@ -306,11 +337,14 @@ public:
   vtkNew<vtkTextureObject> Entry[2];
   vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkTextureObject> OpaqueDepth;
+  vtkNew<vtkOpenGLFramebufferObject> OpaqueDepthFramebuffer;
+  unsigned int OpaqueDepthFormat = 0;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer[2];
   int TargetSize[2] = { 0, 0 };
 
   // Programs.
-  Program FirstHit, Peel, NearSlice, Traversal, Copy, Count, Composite;
+  Program FirstHitProgram, PeelProgram, NearSliceProgram, TraversalProgram, CopyProgram,
+    CountProgram, CompositeProgram;
 
   // Queries and timers.
   vtkTiledRayCastOcclusionQueries Queries;
@@ -345,6 +379,7 @@ public:
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
+  bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
   void ComputeGeometry(vtkRenderer* ren, vtkVolume* vol);
   void MakeTiles();
   void ReadTimers(bool wait);
@@ -358,7 +393,7 @@ public:
   void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
   void DrawViewport(Program& program);
 
-  void BindTargets(vtkOpenGLState* state, int parity, bool allOutputs);
+  void BindTargets(vtkOpenGLState* state, int parity);
   bool RenderFirstHit(vtkOpenGLRenderWindow* window);
   unsigned int Peel(vtkOpenGLRenderWindow* window);
   void RayCastLayer(vtkOpenGLRenderWindow* window);
@@ -399,13 +434,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
   {
     this->VersionHeader = "#version 330 core\n";
   }
-  else if (major == 3 && minor == 2 && GLEW_ARB_shader_bit_encoding &&
-    GLEW_ARB_explicit_attrib_location)
+  else if (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location)
   {
-    // GLSL 1.50 with the two extensions the shaders need: bit casts of floats (tet ids kept in
-    // float render targets) and explicit output locations (several render targets).
+    // GLSL 1.50 with explicit output locations (several render targets).
     this->VersionHeader = "#version 150\n"
-                          "#extension GL_ARB_shader_bit_encoding : require\n"
                           "#extension GL_ARB_explicit_attrib_location : require\n";
   }
   else
@@ -413,7 +445,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
     std::ostringstream msg;
     msg << "The OpenGL context (version " << major << "." << minor
         << ") lacks what tiled ray casting needs: OpenGL 3.3, or 3.2 with "
-           "GL_ARB_shader_bit_encoding and GL_ARB_explicit_attrib_location. Nothing is drawn.";
+           "GL_ARB_explicit_attrib_location. Nothing is drawn.";
     this->ContextError = msg.str();
     return false;
   }
@@ -433,16 +465,17 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
   builder->SetArrayAccessMode(self->GetArrayAccessMode());
   builder->SetArrayId(self->ArrayId);
   builder->SetArrayName(self->ArrayName);
-  builder->SetVectorMode(self->GetVectorMode());
+  builder->SetVectorMode(self->GetVectorMode() == vtkTiledRayCastVolumeMapper::MAGNITUDE
+      ? vtkTetMeshBuilder::Magnitude
+      : vtkTetMeshBuilder::Component);
   builder->SetVectorComponent(self->GetVectorComponent());
 
+  // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   vtkTetMesh* mesh = builder->Build(input);
-  timer->StopTimer();
-
-  vtkTetMeshValidationReport* report = builder->GetReport();
-  if (report->GetMTime() > this->ReportedTime)
+  vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
+  if (report && report->GetMTime() > this->ReportedTime)
   {
     self->ValidationReport->DeepCopy(report);
     this->ReportedTime = report->GetMTime();
@@ -451,16 +484,16 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
       vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
     }
   }
-  if (!mesh || !report->GetUsable())
+  if (!report || !report->GetUsable())
   {
-    this->ReportError(std::string("Cannot render the input: ") + report->GetErrorMessage());
+    this->ReportError(std::string("Cannot render the input: ") +
+      (report ? report->GetErrorMessage() : "no mesh") + ". Nothing is drawn.");
     return false;
   }
 
-  // The layout the user asked for; rebuilt when the kind or the mesh changed, cheaply when
-  // only the points moved.
+  // The layout the user asked for, within this GPU's limits: repacked only where the mesh
+  // changed (only the point texture when only the points moved).
   const int kind = self->GetMeshLayout();
-  bool rebuilt = false;
   if (kind != this->LayoutKind || !this->Layout)
   {
     if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
@@ -474,24 +507,23 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
       this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
     }
     this->LayoutKind = kind;
-    this->LayoutMeshTime = 0;
+    this->UploadedLayoutTime = 0;
   }
-  if (mesh->GetMTime() > this->LayoutMeshTime)
+  vtkTetMeshLayout* layout = this->Layout;
+  layout->SetMaximumTextureSize(this->MaxTextureSize);
+  layout->SetMaximumTextureBufferSize(this->MaxTextureBufferSize);
+  if (!layout->Update(mesh))
   {
-    timer->StartTimer();
-    if (!this->Layout->Build(mesh))
-    {
-      this->ReportError("Cannot pack the mesh for the GPU: see the previous error.");
-      return false;
-    }
-    timer->StopTimer();
-    this->LayoutMeshTime = mesh->GetMTime();
-    rebuilt = true;
+    this->ReportError(std::string("Cannot pack the mesh for this GPU: ") +
+      layout->GetErrorMessage() + ". Nothing is drawn.");
+    return false;
   }
+  timer->StopTimer();
   self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
 
-  if (rebuilt)
+  if (mesh->GetMTime() != this->MeshTime)
   {
+    this->MeshTime = mesh->GetMTime();
     this->NumberOfTets = mesh->GetNumberOfTetrahedra();
     this->NumberOfFaces = mesh->GetNumberOfBoundaryFaces();
     this->HasCellScalars = mesh->GetHasCellScalars();
@@ -503,7 +535,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
       this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
     }
     mesh->GetScalarRange(this->ScalarRange);
-    this->LongestEdge = mesh->GetLongestEdge();
+    this->LongestEdge = ComputeLongestEdge(mesh);
+    const double volume = (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
+      (bounds[5] - bounds[4]);
+    // The edge of a regular tetrahedron of the mean volume: a typical segment length.
+    this->TypicalEdge = this->NumberOfTets > 0
+      ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets)
+      : 0.0;
   }
   return true;
 }
@@ -529,41 +567,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
     return true; // nothing changed: only the camera moved
   }
 
-  // Check every array against the GPU's limits before touching the GPU.
+  // The layout has checked its arrays against the GPU's limits; the boundary faces too:
   const int n = layout->GetNumberOfArrays();
-  for (int i = 0; i < n; ++i)
-  {
-    vtkDataArray* array = layout->GetArray(i);
-    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TEXTURE_BUFFER)
-    {
-      if (array->GetNumberOfTuples() > this->MaxTextureBufferSize)
-      {
-        std::ostringstream msg;
-        msg << "The mesh (" << this->NumberOfTets << " tetrahedra) needs a texture buffer of "
-            << array->GetNumberOfTuples() << " texels for '" << layout->GetArrayName(i)
-            << "', more than this GPU's GL_MAX_TEXTURE_BUFFER_SIZE (" << this->MaxTextureBufferSize
-            << "). Nothing is drawn.";
-        this->ReportError(msg.str());
-        return false;
-      }
-    }
-    else
-    {
-      int size[2];
-      layout->GetArrayTextureSize(i, size);
-      if (size[0] > this->MaxTextureSize || size[1] > this->MaxTextureSize)
-      {
-        std::ostringstream msg;
-        msg << "The mesh (" << this->NumberOfTets << " tetrahedra) needs a " << size[0] << " x "
-            << size[1] << " texture for '" << layout->GetArrayName(i)
-            << "' in the paper layout, more than this GPU's GL_MAX_TEXTURE_SIZE ("
-            << this->MaxTextureSize << "). Use the compact layout. Nothing is drawn.";
-        this->ReportError(msg.str());
-        return false;
-      }
-    }
-  }
-  if (this->NumberOfFaces * 3 > this->MaxTextureBufferSize)
+  if (this->NumberOfFaces > this->MaxTextureBufferSize)
   {
     this->ReportError("The mesh has more boundary faces than this GPU's "
                       "GL_MAX_TEXTURE_BUFFER_SIZE allows. Nothing is drawn.");
@@ -603,7 +609,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
     const vtkIdType bytes = array->GetNumberOfValues() * array->GetDataTypeSize();
     t->Texture->SetContext(window);
     t->Texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
-    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TEXTURE_BUFFER)
+    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TextureBuffer)
     {
       t->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
       if (isFloat)
@@ -723,7 +729,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
     table->SetMaximumSize(mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
         ? this->Max3DTextureSize
         : this->MaxTextureSize);
+    // Lengths are in world units: the volume's matrix stretches them by at most its norm.
     table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
+    table->SetReferenceLength(
+      0.5 * this->TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
     table->Update(property, this->TransferFunction, this->ScalarRange);
     if (table->GetMTime() > this->UploadedTableTime || mode != this->UploadedTableMode)
     {
@@ -778,9 +787,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
   {
     // Cell scalars: constant per tet, the field has no gradient.
     vtkShaderProgram::Substitute(
-      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_tetScalars;");
+      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_TetScalars;");
     vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
-      "float cellScalar = texelFetch(in_tetScalars, int(tet)).r;\n"
+      "float cellScalar = texelFetch(in_TetScalars, int(tet)).r;\n"
       "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
   }
   const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
@@ -794,6 +803,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
     { "//TRC::Integration::Dec", integration },
   };
   const std::string peelDec = "uniform sampler2D in_previousState;\n"
+                              "uniform sampler2D in_previousColor;\n"
                               "uniform sampler2D in_previousEntry;\n"
                               "uniform float in_peelEpsilon;\n";
   const std::string peelImpl =
@@ -801,10 +811,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
     "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
     "  if (trcStatus(previous) != TRC_WAITING || lambda < previous.y - in_peelEpsilon)\n"
     "  {\n    discard;\n  }\n"
-    "  vec2 lastEntry = texelFetch(in_previousEntry, pixel, 0).xy;\n"
-    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= floatBitsToUint(lastEntry.y))\n"
+    "  vec4 lastEntry = texelFetch(in_previousEntry, pixel, 0);\n"
+    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= trcEntryKey(lastEntry))\n"
     "  {\n    discard;\n  }\n"
-    "  lambda = max(lambda, previous.y);\n";
+    "  lambda = max(lambda, previous.y);\n"
+    "  color = texelFetch(in_previousColor, pixel, 0);\n";
 
   struct Spec
   {
@@ -815,15 +826,15 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
     bool Peel;
   };
   const Spec specs[] = {
-    { &this->FirstHit, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
+    { &this->FirstHitProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
       false },
-    { &this->Peel, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS, true },
-    { &this->NearSlice, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
+    { &this->PeelProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS, true },
+    { &this->NearSliceProgram, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
       vtkTiledRayCastNearSliceFS, false },
-    { &this->Traversal, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
-    { &this->Copy, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCopyFS, false },
-    { &this->Count, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCountFS, false },
-    { &this->Composite, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCompositeFS, false },
+    { &this->TraversalProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
+    { &this->CopyProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCopyFS, false },
+    { &this->CountProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCountFS, false },
+    { &this->CompositeProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCompositeFS, false },
   };
   for (const Spec& spec : specs)
   {
@@ -888,21 +899,19 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
   {
     ok = ok && setup(this->State[q], GL_RGBA32F, GL_RGBA, 4);
     ok = ok && setup(this->Color[q], GL_RGBA32F, GL_RGBA, 4);
-    ok = ok && setup(this->Entry[q], GL_RG32F, GL_RG, 2);
+    ok = ok && setup(this->Entry[q], GL_RGBA32F, GL_RGBA, 4);
   }
-  for (vtkTextureObject* depth : { this->Depth.Get(), this->OpaqueDepth.Get() })
+  vtkTextureObject* depth = this->Depth;
+  depth->SetContext(window);
+  depth->SetMinificationFilter(vtkTextureObject::Nearest);
+  depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+  if (depth->GetHandle() && depth->GetWidth() > 0)
   {
-    depth->SetContext(window);
-    depth->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-    if (depth->GetHandle() && depth->GetWidth() > 0)
-    {
-      depth->Resize(width, height);
-    }
-    else
-    {
-      ok = ok && depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-    }
+    depth->Resize(width, height);
+  }
+  else
+  {
+    ok = ok && depth->AllocateDepth(width, height, vtkTextureObject::Float32);
   }
   if (!ok)
   {
@@ -933,6 +942,114 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
   }
   this->TargetSize[0] = width;
   this->TargetSize[1] = height;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
+  vtkOpenGLRenderWindow* window, int width, int height)
+{
+  // Blit the depth of the caller's framebuffer (possibly multisampled) into a texture of ours,
+  // as VTK's GPU ray-cast mapper does. A depth blit needs the same format on both sides, so the
+  // texture takes the format of the framebuffer's depth attachment, whatever the window or the
+  // render pass made it.
+  vtkOpenGLState* state = window->GetState();
+  GLint readFramebuffer = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
+  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
+  GLint depthBits = 0, stencilBits = 0, componentType = GL_UNSIGNED_NORMALIZED;
+  glGetFramebufferAttachmentParameteriv(
+    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
+  if (depthBits > 0)
+  {
+    glGetFramebufferAttachmentParameteriv(
+      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
+    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
+      readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
+      &stencilBits);
+  }
+  unsigned int format = 0;
+  if (depthBits == 0)
+  {
+    format = GL_NONE; // no depth buffer: nothing opaque stops the rays
+  }
+  else if (stencilBits > 0)
+  {
+    format = componentType == GL_FLOAT ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+  }
+  else if (componentType == GL_FLOAT)
+  {
+    format = GL_DEPTH_COMPONENT32F;
+  }
+  else
+  {
+    format = depthBits >= 32 ? GL_DEPTH_COMPONENT32
+                             : (depthBits >= 24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16);
+  }
+
+  vtkTextureObject* depth = this->OpaqueDepth;
+  const bool resized = depth->GetWidth() != static_cast<unsigned int>(width) ||
+    depth->GetHeight() != static_cast<unsigned int>(height);
+  if (format != this->OpaqueDepthFormat || resized || !depth->GetHandle())
+  {
+    depth->ReleaseGraphicsResources(window);
+    depth->SetContext(window);
+    depth->SetMinificationFilter(vtkTextureObject::Nearest);
+    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
+    depth->SetWrapS(vtkTextureObject::ClampToEdge);
+    depth->SetWrapT(vtkTextureObject::ClampToEdge);
+    bool ok = true;
+    if (format == GL_DEPTH24_STENCIL8)
+    {
+      ok = depth->AllocateDepthStencil(width, height);
+    }
+    else
+    {
+      const bool stencil = format == GL_DEPTH32F_STENCIL8;
+      depth->SetInternalFormat(format == GL_NONE ? GL_DEPTH_COMPONENT32F : format);
+      depth->SetFormat(stencil ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT);
+      depth->SetDataType(stencil ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+                                 : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE
+                                       ? GL_FLOAT
+                                       : GL_UNSIGNED_INT));
+      ok = depth->Allocate2D(width, height, 1, VTK_FLOAT);
+    }
+    if (!ok)
+    {
+      this->ReportError("Cannot allocate a texture for the scene's depth. Nothing is drawn.");
+      return false;
+    }
+    state->PushFramebufferBindings();
+    this->OpaqueDepthFramebuffer->SetContext(window);
+    this->OpaqueDepthFramebuffer->Bind();
+    this->OpaqueDepthFramebuffer->AddDepthAttachment(depth);
+    state->vtkglDrawBuffer(GL_NONE);
+    state->vtkglReadBuffer(GL_NONE);
+    state->PopFramebufferBindings();
+    this->OpaqueDepthFormat = format;
+  }
+
+  state->PushDrawFramebufferBinding();
+  this->OpaqueDepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  if (format == GL_NONE)
+  {
+    // Depth 1 everywhere: the rays run to the far plane.
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+  }
+  else
+  {
+    state->vtkglBlitFramebuffer(this->Viewport[0], this->Viewport[1], this->Viewport[0] + width,
+      this->Viewport[1] + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  }
+  state->PopDrawFramebufferBinding();
+  if (glGetError() != GL_NO_ERROR)
+  {
+    this->ReportError("Cannot read the depth of the scene's framebuffer. Nothing is drawn.");
+    return false;
+  }
   return true;
 }
 
@@ -1254,15 +1371,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawViewport(Program& prog
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(
-  vtkOpenGLState* state, int parity, bool allOutputs)
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(vtkOpenGLState*, int parity)
 {
-  this->Framebuffer[parity]->Bind(GL_DRAW_FRAMEBUFFER);
-  // Boundary-face passes write the state and the entry but leave the colour alone.
-  unsigned int buffers[3] = { GL_COLOR_ATTACHMENT0,
-    allOutputs ? static_cast<unsigned int>(GL_COLOR_ATTACHMENT1) : static_cast<unsigned int>(GL_NONE),
-    GL_COLOR_ATTACHMENT2 };
-  state->vtkglDrawBuffers(3, buffers);
+  // Every pass writes all three targets (state, colour, entry). VTK 9.1's state cache keeps one
+  // set of draw buffers for all framebuffers, so after switching framebuffers it may believe
+  // ours are already set when they are not: going through "none" forces the real call.
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer[parity];
+  fbo->Bind(GL_DRAW_FRAMEBUFFER);
+  fbo->DeactivateDrawBuffers();
+  fbo->ActivateDrawBuffers(3);
 }
 
 //------------------------------------------------------------------------------
@@ -1280,10 +1397,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   for (int q = 1; q >= 0; --q)
   {
-    this->BindTargets(state, q, true);
+    this->BindTargets(state, q);
     state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
-  this->BindTargets(state, 0, false);
+  this->BindTargets(state, 0);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_LESS);
 
@@ -1291,9 +1408,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(
   {
     // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
     state->vtkglDisable(GL_CULL_FACE);
-    this->SetFrameUniforms(this->Use(window, this->NearSlice));
-    this->SetMeshUniforms(this->NearSlice.Shader);
-    this->NearSlice.VAO->Bind();
+    this->SetFrameUniforms(this->Use(window, this->NearSliceProgram));
+    this->SetMeshUniforms(this->NearSliceProgram.Shader);
+    this->NearSliceProgram.VAO->Bind();
     this->NearPlaneQuery = this->Queries.Begin();
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->NumberOfTets));
     this->Queries.End();
@@ -1302,9 +1419,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(
   // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  this->SetFrameUniforms(this->Use(window, this->FirstHit));
-  this->SetMeshUniforms(this->FirstHit.Shader);
-  this->FirstHit.VAO->Bind();
+  this->SetFrameUniforms(this->Use(window, this->FirstHitProgram));
+  this->SetMeshUniforms(this->FirstHitProgram.Shader);
+  this->FirstHitProgram.VAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
   vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
   return true;
@@ -1320,7 +1437,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   // state first (per tile, from whichever set is current).
   this->MakeTilesIdentical(window);
 
-  this->BindTargets(state, 1, false);
+  this->BindTargets(state, 1);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT);
@@ -1328,13 +1445,14 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   state->vtkglDepthFunc(GL_LESS);
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  vtkShaderProgram* p = this->Use(window, this->Peel);
+  vtkShaderProgram* p = this->Use(window, this->PeelProgram);
   this->SetFrameUniforms(p);
   this->SetMeshUniforms(p);
   p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
   p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
+  p->SetUniformi("in_previousColor", this->Color[0]->GetTextureUnit());
   p->SetUniformf("in_peelEpsilon", 2e-6f);
-  this->Peel.VAO->Bind();
+  this->PeelProgram.VAO->Bind();
   const unsigned int query = this->Queries.Begin();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
   this->Queries.End();
@@ -1364,11 +1482,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CopyTile(
   // Copies the tile's current set to the other set and flips its parity. As a Z-update it also
   // writes depth 0 for rays that are no longer active (later passes skip them) and 1 for the
   // others; the caller sets the depth test.
-  vtkShaderProgram* copy = this->Use(window, this->Copy);
-  this->BindTargets(window->GetState(), 1 - tile.Parity, true);
+  vtkShaderProgram* copy = this->Use(window, this->CopyProgram);
+  this->BindTargets(window->GetState(), 1 - tile.Parity);
   this->SetTargetUniforms(copy, tile.Parity);
   copy->SetUniformi("in_markInactive", markInactive ? 1 : 0);
-  this->DrawRectangle(this->Copy, tile.X0, tile.Y0, tile.X1, tile.Y1);
+  this->DrawRectangle(this->CopyProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
   tile.Parity = 1 - tile.Parity;
 }
 
@@ -1391,14 +1509,14 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CountActiveRays(
   vtkOpenGLRenderWindow* window, Tile& tile)
 {
   vtkOpenGLState* state = window->GetState();
-  vtkShaderProgram* count = this->Use(window, this->Count);
+  vtkShaderProgram* count = this->Use(window, this->CountProgram);
   count->SetUniformi("in_statusMask", 1 << StatusActive);
   this->SetTargetUniforms(count, tile.Parity);
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   tile.LastQuery = this->Queries.Begin();
-  this->DrawRectangle(this->Count, tile.X0, tile.Y0, tile.X1, tile.Y1);
+  this->DrawRectangle(this->CountProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
   this->Queries.End();
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
@@ -1417,7 +1535,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
   const int maxPasses = self->GetMaximumNumberOfPassesPerLayer();
 
   // No ray of this layer is marked finished yet.
-  this->BindTargets(state, 0, true);
+  this->BindTargets(state, 0);
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT);
@@ -1432,7 +1550,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
     tile.Running = true;
   }
 
-  vtkShaderProgram* traversal = this->Use(window, this->Traversal);
+  vtkShaderProgram* traversal = this->Use(window, this->TraversalProgram);
   this->SetFrameUniforms(traversal);
   this->SetMeshUniforms(traversal);
   this->SetIntegrationUniforms(traversal);
@@ -1447,9 +1565,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
     {
       Tile& tile = this->Tiles[i];
       this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->BindTargets(state, 1 - tile.Parity, true);
+      this->BindTargets(state, 1 - tile.Parity);
       this->SetTargetUniforms(traversal, tile.Parity);
-      this->DrawRectangle(this->Traversal, tile.X0, tile.Y0, tile.X1, tile.Y1);
+      this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
       this->Queries.EndConditionalRender();
       tile.Parity = 1 - tile.Parity;
       this->PassBlocks.push_back({ i, tile.LastQuery, 1 });
@@ -1499,15 +1617,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
       }
       anyRunning = true;
       this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->Use(window, this->Traversal);
+      this->Use(window, this->TraversalProgram);
       state->vtkglEnable(GL_DEPTH_TEST);
       state->vtkglDepthFunc(GL_LESS);
       state->vtkglDepthMask(GL_FALSE);
       for (int k = 0; k < interval; ++k)
       {
-        this->BindTargets(state, 1 - tile.Parity, true);
+        this->BindTargets(state, 1 - tile.Parity);
         this->SetTargetUniforms(traversal, tile.Parity);
-        this->DrawRectangle(this->Traversal, tile.X0, tile.Y0, tile.X1, tile.Y1);
+        this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
         tile.Parity = 1 - tile.Parity;
       }
       state->vtkglDepthMask(GL_TRUE);
@@ -1539,12 +1657,18 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
       this->CopyTile(window, tile, false);
     }
   }
-  vtkShaderProgram* count = this->Use(window, this->Count);
+  vtkShaderProgram* count = this->Use(window, this->CountProgram);
   count->SetUniformi("in_statusMask", 1 << StatusDoneOpaque);
   this->SetTargetUniforms(count, 0);
   state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
   const unsigned int opaqueQuery = this->Queries.Begin();
-  this->DrawViewport(this->Count);
+  this->DrawViewport(this->CountProgram);
+  this->Queries.End();
+  // And the rays that entered the mesh, counted here rather than while compositing: the
+  // caller's framebuffer may be multisampled, ours counts pixels.
+  count->SetUniformi("in_statusMask", ~(1 << StatusMiss));
+  const unsigned int raysQuery = this->Queries.Begin();
+  this->DrawViewport(this->CountProgram);
   this->Queries.End();
   state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
@@ -1553,14 +1677,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
   state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  vtkShaderProgram* composite = this->Use(window, this->Composite);
+  vtkShaderProgram* composite = this->Use(window, this->CompositeProgram);
   this->SetTargetUniforms(composite, 0);
   const float origin[2] = { static_cast<float>(this->Viewport[0]),
     static_cast<float>(this->Viewport[1]) };
   composite->SetUniform2f("in_viewportOrigin", origin);
-  const unsigned int raysQuery = this->Queries.Begin();
-  this->DrawViewport(this->Composite);
-  this->Queries.End();
+  this->DrawViewport(this->CompositeProgram);
 
   stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
   stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
@@ -1622,10 +1744,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
     this->Entry[q]->ReleaseGraphicsResources(window);
     this->Framebuffer[q]->ReleaseGraphicsResources(window);
   }
+  this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
   this->Depth->ReleaseGraphicsResources(window);
   this->OpaqueDepth->ReleaseGraphicsResources(window);
-  for (Program* p : { &this->FirstHit, &this->Peel, &this->NearSlice, &this->Traversal,
-         &this->Copy, &this->Count, &this->Composite })
+  for (Program* p : { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram,
+         &this->TraversalProgram, &this->CopyProgram, &this->CountProgram,
+         &this->CompositeProgram })
   {
     p->Release(window);
   }
@@ -1690,8 +1814,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::IsSupported(vtkRenderWindow* window)
   int major = 0, minor = 0;
   gl->GetOpenGLVersion(major, minor);
   return major > 3 || (major == 3 && minor >= 3) ||
-    (major == 3 && minor == 2 && GLEW_ARB_shader_bit_encoding &&
-      GLEW_ARB_explicit_attrib_location);
+    (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location);
 }
 
 //------------------------------------------------------------------------------
@@ -1811,8 +1934,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
   start(impl->TotalTimer);
-  // The opaque geometry drawn so far ends the rays: its depth, from the caller's framebuffer.
-  impl->OpaqueDepth->CopyFromFrameBuffer(impl->Viewport[0], impl->Viewport[1], 0, 0, width, height);
+  // The opaque geometry drawn so far ends the rays.
+  if (!impl->CaptureOpaqueDepth(window, width, height))
+  {
+    return;
+  }
 
   state->PushFramebufferBindings();
   state->vtkglViewport(0, 0, width, height);
@@ -1874,8 +2000,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   stats->SetMeshBytesPerTetrahedron(
     impl->NumberOfTets > 0 ? static_cast<double>(impl->MeshBytes) / impl->NumberOfTets : 0.0);
   stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
-  // Per pixel: two sets of state (16 B), colour (16 B) and entry (8 B), plus two depth buffers.
-  stats->SetRenderTargetBytes(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 8) + 8));
+  // Per pixel: two sets of state, colour and entry (16 B each), plus two depth buffers.
+  stats->SetRenderTargetBytes(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 16) + 8));
   vtkOpenGLCheckErrorMacro("failed after Render");
 
   this->Timer->StopTimer();

@@ -17,7 +17,7 @@
  * class wraps into Python. See vtkTiledRayCastVolumeMapper for the algorithm and docs/design.md
  * for the conventions.
  *
- * Needs an OpenGL 3.3 core context (or 3.2 with ARB_shader_bit_encoding and
+ * Needs an OpenGL 3.3 core context (or 3.2 with
  * ARB_explicit_attrib_location); without one, Render() reports an error and draws nothing.
  */
 

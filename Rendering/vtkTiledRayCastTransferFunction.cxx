@@ -106,7 +106,7 @@ struct PropertyFunctions
       return IsLinear(this->Gray);
     }
     if (this->Color->GetColorSpace() != VTK_CTF_RGB || this->Color->GetScale() != VTK_CTF_LINEAR ||
-      this->Color->GetDiscretize() || this->Color->GetUseAboveRangeColor() ||
+      this->Color->GetUseAboveRangeColor() ||
       this->Color->GetUseBelowRangeColor())
     {
       return false;

@@ -22,6 +22,7 @@ flat in int ip_face;
 
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
+layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {
@@ -51,10 +52,13 @@ void main()
     discard;
   }
   uint key = (ip_tet << 2u) | uint(ip_face);
+  // A new ray has no colour yet; a re-entering one keeps its own (set by peeling).
+  vec4 color = vec4(0.0);
   //TRC::Peel::Impl
   // Our own depth buffer orders layers by mu = lambda - lambdaNear (linear in
   // lambda, unlike window depth).
   gl_FragDepth = clamp(lambda - in_lambdaNear, 0.0, 1.0);
   fragOutput0 = trcPackState(ip_tet, lambda, TRC_ACTIVE, ip_face);
-  fragOutput1 = vec4(lambda, uintBitsToFloat(key), 0.0, 0.0);
+  fragOutput1 = color;
+  fragOutput2 = trcPackEntry(lambda, key);
 }

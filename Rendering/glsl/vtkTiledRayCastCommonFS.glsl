@@ -35,9 +35,13 @@ uniform float in_earlyTerminationOpacity;
 uniform sampler2D in_opaqueDepth;
 
 // The ray state of a pixel is two textures:
-//   state  (RGBA32F): tet (uint bits), lambda, unused, status + 8 (entry face + 2)
-//   entry  (RG32F):   lambda and (tet << 2 | face) bits of the last boundary
-//                     face the ray entered through (for robust peeling)
+//   state (RGBA32F): tet (low 20 bits), lambda, tet (high bits),
+//                    status + 8 (entry face + 2)
+//   entry (RGBA32F): lambda and key (tet << 2 | face, low 20 bits, high bits) of
+//                    the last boundary face the ray entered through (for robust
+//                    peeling)
+// Ids are stored as exact float values in two parts, never as float bit
+// patterns: small ids would be denormal floats, which GPUs may flush to zero.
 // Ray status:
 const int TRC_MISS = 0;          // the ray never entered the mesh
 const int TRC_ACTIVE = 1;        // inside tet state.x, at lambda state.y
@@ -53,9 +57,36 @@ const uint TRC_NO_NEIGHBOR = 0xFFFFFFFFu;
 // Key of the "boundary face" of a ray that started at the near plane.
 const uint TRC_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 
+vec2 trcPackId(uint id)
+{
+  return vec2(float(id & 0xFFFFFu), float(id >> 20u));
+}
+
+uint trcUnpackId(float low, float high)
+{
+  return (uint(high) << 20u) + uint(low);
+}
+
 vec4 trcPackState(uint tet, float lambda, int status, int entryFace)
 {
-  return vec4(uintBitsToFloat(tet), lambda, 0.0, float(status + 8 * (entryFace + 2)));
+  vec2 id = trcPackId(tet);
+  return vec4(id.x, lambda, id.y, float(status + 8 * (entryFace + 2)));
+}
+
+uint trcStateTet(vec4 state)
+{
+  return trcUnpackId(state.x, state.z);
+}
+
+vec4 trcPackEntry(float lambda, uint key)
+{
+  vec2 id = trcPackId(key);
+  return vec4(lambda, id.x, id.y, 0.0);
+}
+
+uint trcEntryKey(vec4 entry)
+{
+  return trcUnpackId(entry.y, entry.z);
 }
 
 int trcStatus(vec4 state)

@@ -4,26 +4,26 @@
 // or TRC_NO_NEIGHBOR); per point: (x, y, z, scalar) in RGBA32F. Normals and
 // the linear scalar field are computed here, from the four points.
 //============================================================================
-uniform usamplerBuffer in_tetPoints;
-uniform usamplerBuffer in_tetNeighbors;
-uniform samplerBuffer in_points;
+uniform usamplerBuffer in_TetPoints;
+uniform usamplerBuffer in_TetNeighbors;
+uniform samplerBuffer in_Points;
 //TRC::CellScalars::Dec
 
 vec3 trcTetPoint(uint tet, int i)
 {
-  uint id = texelFetch(in_tetPoints, int(tet))[i];
-  return texelFetch(in_points, int(id)).xyz;
+  uint id = texelFetch(in_TetPoints, int(tet))[i];
+  return texelFetch(in_Points, int(id)).xyz;
 }
 
 // Points, outward face normals (not normalised) and the scalar field
 // s(x) = dot(field.xyz, x) + field.w of one tet.
 void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
 {
-  uvec4 ids = texelFetch(in_tetPoints, int(tet));
-  vec4 q0 = texelFetch(in_points, int(ids.x));
-  vec4 q1 = texelFetch(in_points, int(ids.y));
-  vec4 q2 = texelFetch(in_points, int(ids.z));
-  vec4 q3 = texelFetch(in_points, int(ids.w));
+  uvec4 ids = texelFetch(in_TetPoints, int(tet));
+  vec4 q0 = texelFetch(in_Points, int(ids.x));
+  vec4 q1 = texelFetch(in_Points, int(ids.y));
+  vec4 q2 = texelFetch(in_Points, int(ids.z));
+  vec4 q3 = texelFetch(in_Points, int(ids.w));
   p[0] = q0.xyz;
   p[1] = q1.xyz;
   p[2] = q2.xyz;
@@ -49,7 +49,7 @@ void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
 // Neighbour tet across each face and the index of the shared face in it.
 void trcLoadNeighbors(uint tet, out uvec4 tets, out ivec4 faces)
 {
-  uvec4 words = texelFetch(in_tetNeighbors, int(tet));
+  uvec4 words = texelFetch(in_TetNeighbors, int(tet));
   tets = words >> 2u;
   faces = ivec4(words & 3u);
   tets.x = words.x == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : tets.x;

@@ -8,6 +8,7 @@ flat in uint ip_tet;
 
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
+layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {
@@ -19,5 +20,6 @@ void main()
   // Depth 0: a ray that starts at the near plane wins over every boundary face.
   gl_FragDepth = 0.0;
   fragOutput0 = trcPackState(ip_tet, in_lambdaNear, TRC_ACTIVE, TRC_NO_FACE);
-  fragOutput1 = vec4(in_lambdaNear, uintBitsToFloat(TRC_NEAR_PLANE_KEY), 0.0, 0.0);
+  fragOutput1 = vec4(0.0);
+  fragOutput2 = trcPackEntry(in_lambdaNear, TRC_NEAR_PLANE_KEY);
 }

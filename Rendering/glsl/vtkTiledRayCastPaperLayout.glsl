@@ -9,9 +9,9 @@
 // none. The paper stores no entry face: the traversal finds it as the face
 // shared with the tet it came from.
 //============================================================================
-uniform sampler2D in_paperVertices;
-uniform sampler2D in_paperNormals;
-uniform sampler2D in_paperNeighborScalars;
+uniform sampler2D in_Vertices;
+uniform sampler2D in_FaceNormals;
+uniform sampler2D in_NeighborsAndScalars;
 uniform int in_paperWidth;
 
 ivec2 trcPaperTexel(uint tet)
@@ -25,21 +25,21 @@ vec3 trcTetPoint(uint tet, int i)
   ivec2 c = trcPaperTexel(tet);
   if (i < 3)
   {
-    return texelFetch(in_paperVertices, c + ivec2(0, i), 0).xyz;
+    return texelFetch(in_Vertices, c + ivec2(0, i), 0).xyz;
   }
-  return vec3(texelFetch(in_paperVertices, c, 0).w, texelFetch(in_paperVertices, c + ivec2(0, 1), 0).w,
-    texelFetch(in_paperVertices, c + ivec2(0, 2), 0).w);
+  return vec3(texelFetch(in_Vertices, c, 0).w, texelFetch(in_Vertices, c + ivec2(0, 1), 0).w,
+    texelFetch(in_Vertices, c + ivec2(0, 2), 0).w);
 }
 
 void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
 {
   ivec2 c = trcPaperTexel(tet);
-  vec4 v0 = texelFetch(in_paperVertices, c, 0);
-  vec4 v1 = texelFetch(in_paperVertices, c + ivec2(0, 1), 0);
-  vec4 v2 = texelFetch(in_paperVertices, c + ivec2(0, 2), 0);
-  vec4 m0 = texelFetch(in_paperNormals, c, 0);
-  vec4 m1 = texelFetch(in_paperNormals, c + ivec2(0, 1), 0);
-  vec4 m2 = texelFetch(in_paperNormals, c + ivec2(0, 2), 0);
+  vec4 v0 = texelFetch(in_Vertices, c, 0);
+  vec4 v1 = texelFetch(in_Vertices, c + ivec2(0, 1), 0);
+  vec4 v2 = texelFetch(in_Vertices, c + ivec2(0, 2), 0);
+  vec4 m0 = texelFetch(in_FaceNormals, c, 0);
+  vec4 m1 = texelFetch(in_FaceNormals, c + ivec2(0, 1), 0);
+  vec4 m2 = texelFetch(in_FaceNormals, c + ivec2(0, 2), 0);
   p[0] = v0.xyz;
   p[1] = v1.xyz;
   p[2] = v2.xyz;
@@ -48,7 +48,7 @@ void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
   n[1] = m1.xyz;
   n[2] = m2.xyz;
   n[3] = vec3(m0.w, m1.w, m2.w);
-  field = texelFetch(in_paperNeighborScalars, c + ivec2(0, 2), 0);
+  field = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 2), 0);
 }
 
 uint trcPaperTet(vec2 uv)
@@ -63,8 +63,8 @@ uint trcPaperTet(vec2 uv)
 void trcLoadNeighbors(uint tet, out uvec4 tets, out ivec4 faces)
 {
   ivec2 c = trcPaperTexel(tet);
-  vec4 a01 = texelFetch(in_paperNeighborScalars, c, 0);
-  vec4 a23 = texelFetch(in_paperNeighborScalars, c + ivec2(0, 1), 0);
+  vec4 a01 = texelFetch(in_NeighborsAndScalars, c, 0);
+  vec4 a23 = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 1), 0);
   tets = uvec4(trcPaperTet(a01.xy), trcPaperTet(a01.zw), trcPaperTet(a23.xy), trcPaperTet(a23.zw));
   faces = ivec4(TRC_FACE_FROM_PREVIOUS);
 }

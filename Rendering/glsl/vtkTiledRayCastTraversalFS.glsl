@@ -36,7 +36,7 @@ void main()
   }
 
   TrcRay ray = trcPixelRay(gl_FragCoord.xy);
-  uint tet = floatBitsToUint(state.x);
+  uint tet = trcStateTet(state);
   float lambda = state.y;
   int entry = trcEntryFace(state);
   uint previous = TRC_NO_NEIGHBOR;
