@@ -103,11 +103,13 @@ inline vtkSmartPointer<vtkVolumeProperty> MakePropertyFor(
 }
 
 // Bounds on the difference between the window's image and the exact reference, in 1/255.
+// The defaults hold for partial pre-integration, exact up to float arithmetic and the 8-bit
+// framebuffer: what remains is rounding (1/255) and rare silhouette pixels.
 struct Bounds
 {
-  double RMSE = 1.0;
-  double P999 = 8.0; // 99.9th percentile of per-channel differences
-  double Max = 255;
+  double RMSE = 0.75;
+  double P999 = 2.0; // 99.9th percentile of per-channel differences
+  double Max = 8.0;
 };
 
 // Renders the exact reference of what `volume` shows in `renderer` (same camera, viewport size,
@@ -125,6 +127,15 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   }
   int width = 0, height = 0, x0 = 0, y0 = 0;
   renderer->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+
+  // What lies behind the volume: the scene rendered without it (background and opaque
+  // geometry), over which the reference is composited.
+  volume->VisibilityOff();
+  window->Render();
+  vtkNew<vtkUnsignedCharArray> behind;
+  window->GetPixelData(x0, y0, x0 + width - 1, y0 + height - 1, 0, behind, 0);
+  volume->VisibilityOn();
+  window->Render();
 
   vtkNew<vtkUnsignedCharArray> pixels;
   window->GetPixelData(x0, y0, x0 + width - 1, y0 + height - 1, 0, pixels, 0);
@@ -155,8 +166,25 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
     std::cerr << label << ": the reference renderer failed\n";
     return false;
   }
+  // Composite the premultiplied reference over what lies behind, rounded as a framebuffer does.
+  vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetArray("RGBA");
+  vtkNew<vtkUnsignedCharArray> composited;
+  composited->SetName("RGB");
+  composited->SetNumberOfComponents(3);
+  composited->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  for (vtkIdType i = 0; i < composited->GetNumberOfTuples(); ++i)
+  {
+    const double alpha = rgba->GetComponent(i, 3);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value = rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
+      composited->SetValue(3 * i + c,
+        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
+    }
+  }
   vtkNew<vtkImageData> expected;
-  reference->ConvertToUnsignedChar(reference->GetOutput(), renderer->GetBackground(), expected);
+  expected->SetDimensions(width, height, 1);
+  expected->GetPointData()->SetScalars(composited);
 
   vtkNew<vtkImageData> actual;
   actual->SetDimensions(width, height, 1);
