@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
@@ -286,6 +287,12 @@ public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
     : Self(self)
   {
+    // The builder and the layouts are the mapper's own parts: their errors and warnings end
+    // up in the validation report and in the mapper's one message about them, so that a user
+    // (or a test) hears of a problem once and from the object they hold.
+    this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
+    this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
+    this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
@@ -300,9 +307,11 @@ public:
   int Max3DTextureSize = 0;
 
   // CPU mesh and its GPU layout.
+  vtkNew<vtkCallbackCommand> Silencer;
   vtkNew<vtkTetMeshBuilder> Builder;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
   int LayoutKind = -1;
+  int LayoutTextureLimit = 0;
   vtkMTimeType MeshTime = 0;
   vtkMTimeType ReportedTime = 0;
   std::vector<MeshTexture*> MeshTextures;
@@ -491,27 +500,45 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
     return false;
   }
 
-  // The layout the user asked for, within this GPU's limits: repacked only where the mesh
-  // changed (only the point texture when only the points moved).
+  // The layout the user asked for, within the GPU's limits (or the user's lower ones): repacked
+  // only where the mesh changed (only the point texture when only the points moved).
+  const int userTexture = self->GetMaximumTextureSize();
+  const vtkIdType userBuffer = self->GetMaximumTextureBufferSize();
+  const int textureLimit =
+    userTexture > 0 ? std::min(userTexture, this->MaxTextureSize) : this->MaxTextureSize;
+  const vtkIdType bufferLimit = userBuffer > 0
+    ? std::min<vtkIdType>(userBuffer, this->MaxTextureBufferSize)
+    : this->MaxTextureBufferSize;
   const int kind = self->GetMeshLayout();
-  if (kind != this->LayoutKind || !this->Layout)
+  if (kind != this->LayoutKind || !this->Layout || textureLimit != this->LayoutTextureLimit)
   {
+    this->LayoutTextureLimit = textureLimit;
     if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
     {
+      // Rows of three texels per tetrahedron: a wide texture keeps the height small.
       vtkNew<vtkTetMeshPaperLayout> paper;
-      paper->SetTextureWidth(std::min(this->MaxTextureSize, 8192));
+      paper->SetTextureWidth(std::min(textureLimit, 8192));
       this->Layout = paper;
     }
     else
     {
       this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
     }
+    this->Layout->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
+    this->Layout->AddObserver(vtkCommand::WarningEvent, this->Silencer);
     this->LayoutKind = kind;
     this->UploadedLayoutTime = 0;
   }
   vtkTetMeshLayout* layout = this->Layout;
-  layout->SetMaximumTextureSize(this->MaxTextureSize);
-  layout->SetMaximumTextureBufferSize(this->MaxTextureBufferSize);
+  layout->SetMaximumTextureSize(textureLimit);
+  layout->SetMaximumTextureBufferSize(bufferLimit);
+  if (mesh->GetNumberOfBoundaryFaces() > bufferLimit)
+  {
+    this->ReportError("The mesh has more boundary faces (" +
+      std::to_string(mesh->GetNumberOfBoundaryFaces()) +
+      ") than the texture buffer limit (" + std::to_string(bufferLimit) + "). Nothing is drawn.");
+    return false;
+  }
   if (!layout->Update(mesh))
   {
     this->ReportError(std::string("Cannot pack the mesh for this GPU: ") +
@@ -569,12 +596,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 
   // The layout has checked its arrays against the GPU's limits; the boundary faces too:
   const int n = layout->GetNumberOfArrays();
-  if (this->NumberOfFaces > this->MaxTextureBufferSize)
-  {
-    this->ReportError("The mesh has more boundary faces than this GPU's "
-                      "GL_MAX_TEXTURE_BUFFER_SIZE allows. Nothing is drawn.");
-    return false;
-  }
 
   vtkOpenGLClearErrorMacro();
   vtkIdType uploaded = 0;

@@ -63,6 +63,8 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
   os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer
      << "\n";
+  os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
+  os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";

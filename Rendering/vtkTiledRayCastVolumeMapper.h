@@ -178,6 +178,19 @@ public:
 
   ///@{
   /**
+   * Upper bounds on the GPU textures the mesh may use, in texels: the largest texture buffer
+   * and the largest side of a 2D texture. 0 (the default) means the GPU's own limits
+   * (GL_MAX_TEXTURE_BUFFER_SIZE, GL_MAX_TEXTURE_SIZE); a positive value can only lower them
+   * (to leave memory to other work, or to test how a mesh too large is refused).
+   */
+  vtkSetClampMacro(MaximumTextureBufferSize, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumTextureBufferSize, vtkIdType);
+  vtkSetClampMacro(MaximumTextureSize, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumTextureSize, int);
+  ///@}
+
+  ///@{
+  /**
    * How a scalar array of several components is reduced to the one scalar that is rendered:
    * one component (VectorComponent) or the magnitude, as in vtkScalarsToColors. Defaults:
    * COMPONENT, component 0.
@@ -242,6 +255,8 @@ protected:
   int MaximumNumberOfPassesPerLayer = 1000000;
   int VectorMode = COMPONENT;
   int VectorComponent = 0;
+  vtkIdType MaximumTextureBufferSize = 0;
+  int MaximumTextureSize = 0;
   int PreIntegrationTableScalarSize = 0;
   int PreIntegrationTableLengthSize = 0;
   bool SynchronousStatistics = false;

@@ -1,0 +1,214 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastBadInput.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Bad input gets a clear error, nothing is drawn for the volume, nothing crashes, and the rest
+// of the scene (an opaque cone) still renders: an empty grid, a grid without scalars, a grid of
+// triangles only, a mesh larger than the texture limits, a blend mode the mapper does not do.
+// NaN scalars are not an error: the tetrahedra touching them are transparent, as the exact
+// reference renderer has them.
+#include "TiledRayCastTestScene.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkConeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkTetMeshValidationReport.h"
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace
+{
+// Collects the errors and warnings an object reports (and keeps them out of the test log).
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Text += static_cast<const char*>(data);
+  }
+  int Count = 0;
+  std::string Text;
+};
+
+bool Expect(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "check failed: " << what << "\n";
+  }
+  return condition;
+}
+
+// Renders `grid` next to an opaque cone and checks that the mapper refused it with an error
+// containing `message`, drew nothing, and left the cone on screen.
+bool Refused(const std::string& label, vtkUnstructuredGrid* grid, const char* message,
+  const std::function<void(vtkTiledRayCastVolumeMapper*)>& configure = nullptr)
+{
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  if (configure)
+  {
+    configure(mapper);
+  }
+  vtkNew<MessageCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  mapper->AddObserver(vtkCommand::WarningEvent, errors);
+
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(trctest::MakeProperty(0, 1, 0.1));
+  vtkNew<vtkConeSource> cone;
+  vtkNew<vtkPolyDataMapper> coneMapper;
+  coneMapper->SetInputConnection(cone->GetOutputPort());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(coneMapper);
+  actor->GetProperty()->SetColor(1, 1, 1);
+  actor->GetProperty()->SetAmbient(1);
+  actor->GetProperty()->SetDiffuse(0);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0, 0, 0);
+  renderer->AddActor(actor);
+  renderer->AddVolume(volume);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(64, 64);
+  window->AddRenderer(renderer);
+  cone->Update();
+  renderer->ResetCamera(cone->GetOutput()->GetBounds());
+  window->Render();
+  window->Render(); // a second frame must neither crash nor repeat the error
+
+  bool ok = Expect(errors->Count > 0, label + ": an error was reported");
+  const std::string text = errors->Text;
+  ok = Expect(text.find(message) != std::string::npos,
+         label + ": the message says '" + message + "' (got: " + text + ")") &&
+    ok;
+  ok = Expect(errors->Count <= 2, label + ": reported once per cause, not every frame") && ok;
+  ok = Expect(!mapper->GetStatistics()->GetRendered(), label + ": nothing drawn") && ok;
+  unsigned char* center = window->GetPixelData(32, 32, 32, 32, 0);
+  ok = Expect(center[0] > 200, label + ": the cone still renders") && ok;
+  delete[] center;
+  std::cout << label << ": " << text << "\n";
+  return ok;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> OneTet(bool withScalars)
+{
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  points->InsertNextPoint(0, 0, 1);
+  grid->SetPoints(points);
+  const vtkIdType ids[4] = { 0, 1, 2, 3 };
+  grid->InsertNextCell(VTK_TETRA, 4, ids);
+  if (withScalars)
+  {
+    vtkNew<vtkDoubleArray> s;
+    s->SetName("s");
+    for (int i = 0; i < 4; ++i)
+    {
+      s->InsertNextValue(0.25 * i);
+    }
+    grid->GetPointData()->SetScalars(s);
+  }
+  return grid;
+}
+}
+
+int TestTiledRayCastBadInput(int argc, char* argv[])
+{
+  bool ok = true;
+
+  vtkNew<vtkUnstructuredGrid> empty;
+  ok = Refused("empty grid", empty, "Cannot render") && ok;
+
+  ok = Refused("no scalars", OneTet(false), "scalar") && ok;
+
+  vtkNew<vtkUnstructuredGrid> triangles;
+  {
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(1, 0, 0);
+    points->InsertNextPoint(0, 1, 0);
+    triangles->SetPoints(points);
+    const vtkIdType ids[3] = { 0, 1, 2 };
+    triangles->InsertNextCell(VTK_TRIANGLE, 3, ids);
+    vtkNew<vtkDoubleArray> s;
+    s->SetName("s");
+    s->SetNumberOfValues(3);
+    s->FillValue(0.5);
+    triangles->GetPointData()->SetScalars(s);
+  }
+  ok = Refused("triangles only", triangles, "3D") && ok;
+
+  vtkSmartPointer<vtkUnstructuredGrid> spx = trctest::ReadMesh(argc, argv, "spx_vistrails.vtu");
+  if (!spx)
+  {
+    return EXIT_FAILURE;
+  }
+  ok = Refused("too large", spx, "texture buffer", [](vtkTiledRayCastVolumeMapper* m) {
+    m->SetMaximumTextureBufferSize(1000);
+  }) && ok;
+  ok = Refused("too large (paper)", spx, "texture", [](vtkTiledRayCastVolumeMapper* m) {
+    m->SetMeshLayoutToPaper();
+    m->SetMaximumTextureSize(64);
+  }) && ok;
+  ok = Refused("maximum intensity", spx, "composite", [](vtkTiledRayCastVolumeMapper* m) {
+    m->SetBlendModeToMaximumIntensity();
+  }) && ok;
+
+  // NaN scalars: a warning from the builder, and the image of the exact reference (which also
+  // makes the tetrahedra that touch them transparent).
+  {
+    vtkNew<vtkUnstructuredGrid> grid;
+    grid->DeepCopy(spx);
+    vtkDataArray* s = grid->GetPointData()->GetScalars();
+    for (vtkIdType i = 0; i < s->GetNumberOfTuples(); i += 7)
+    {
+      s->SetComponent(i, 0, std::numeric_limits<double>::quiet_NaN());
+    }
+    s->Modified();
+    double range[2];
+    spx->GetPointData()->GetScalars()->GetRange(range);
+    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+    mapper->SetInputData(grid);
+    vtkNew<MessageCounter> warnings;
+    mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()));
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddVolume(volume);
+    vtkNew<vtkRenderWindow> window;
+    window->SetMultiSamples(0);
+    window->SetSize(96, 96);
+    window->AddRenderer(renderer);
+    renderer->ResetCamera();
+    window->Render();
+    ok = Expect(mapper->GetValidationReport()->GetNumberOfNonFiniteScalars() > 0,
+           "NaN scalars are counted") &&
+      ok;
+    ok = Expect(warnings->Text.find("NaN") != std::string::npos, "NaN scalars are reported") && ok;
+    ok = Expect(mapper->GetStatistics()->GetRendered(), "a mesh with NaN scalars renders") && ok;
+    ok = trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), "NaN") && ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -1,0 +1,150 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastUpdates.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// The mapper re-does only what changed, frees everything on request and renders again
+// afterwards, and works in viewports that are not the whole window, in several renderers and in
+// several windows. Every image is checked against the exact reference renderer.
+#include "TiledRayCastTestScene.h"
+
+#include "vtkCommand.h"
+#include "vtkPoints.h"
+
+namespace
+{
+bool Expect(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "check failed: " << what << "\n";
+  }
+  return condition;
+}
+
+vtkIdType Uploaded(vtkTiledRayCastVolumeMapper* mapper)
+{
+  return mapper->GetStatistics()->GetUploadedBytes();
+}
+}
+
+int TestTiledRayCastUpdates(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = trctest::ReadMesh(argc, argv, "spx_vistrails.vtu");
+  if (!grid)
+  {
+    return EXIT_FAILURE;
+  }
+  bool ok = true;
+  const trctest::Bounds bounds;
+
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  mapper->SynchronousStatisticsOn();
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(trctest::MakePropertyFor(grid, 0.1));
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  renderer->SetBackground(0.2, 0.1, 0.1);
+  // A viewport that is not the whole window, next to another renderer.
+  renderer->SetViewport(0.0, 0.0, 0.6, 1.0);
+  vtkNew<vtkRenderer> other;
+  other->SetViewport(0.6, 0.0, 1.0, 1.0);
+  other->SetBackground(0.1, 0.2, 0.1);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(160, 100);
+  window->AddRenderer(renderer);
+  window->AddRenderer(other);
+  renderer->ResetCamera();
+  window->Render();
+  ok = Expect(Uploaded(mapper) > 0, "the first frame uploads the mesh") && ok;
+  ok = Expect(mapper->GetStatistics()->GetTotalGPUTime() >= 0, "GPU times are measured") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "viewport") && ok;
+
+  // The same volume in the second renderer too.
+  other->AddVolume(volume);
+  other->ResetCamera();
+  other->GetActiveCamera()->Azimuth(90);
+  other->ResetCameraClippingRange();
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, other, volume, bounds, "second renderer") && ok;
+  other->RemoveVolume(volume);
+
+  // Only the camera moves: nothing is uploaded.
+  renderer->GetActiveCamera()->Azimuth(40);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  ok = Expect(Uploaded(mapper) == 0, "a camera move uploads nothing") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "camera moved") && ok;
+
+  // The transfer function changes: only its nodes are uploaded.
+  const vtkIdType meshBytes = mapper->GetStatistics()->GetMeshBytes();
+  volume->GetProperty()->GetScalarOpacity()->AddPoint(
+    grid->GetPointData()->GetScalars()->GetRange()[1] * 0.9, 0.9);
+  window->Render();
+  ok = Expect(Uploaded(mapper) > 0 && Uploaded(mapper) < meshBytes / 10,
+         "a transfer-function change uploads only the transfer function (" +
+           std::to_string(Uploaded(mapper)) + " B)") &&
+    ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "new transfer function") &&
+    ok;
+
+  // The points move (a deforming mesh): only the points are uploaded.
+  vtkPoints* points = grid->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    p[2] += 0.05 * std::sin(p[0]);
+    points->SetPoint(i, p);
+  }
+  points->Modified();
+  window->Render();
+  const vtkIdType pointBytes = 16 * grid->GetNumberOfPoints();
+  ok = Expect(Uploaded(mapper) == pointBytes,
+         "moving points uploads the points only (" + std::to_string(Uploaded(mapper)) + " B, " +
+           std::to_string(pointBytes) + " expected)") &&
+    ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "moved points") && ok;
+
+  // Everything freed, then rendered again.
+  mapper->ReleaseGraphicsResources(window);
+  ok = Expect(mapper->GetStatistics()->GetTotalGPUBytes() == 0, "released: no GPU memory held") &&
+    ok;
+  window->Render();
+  ok = Expect(Uploaded(mapper) > 0, "after release, the mesh is uploaded again") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "after release") && ok;
+
+  // The same mapper in a second window (another context): it moves there and back.
+  {
+    vtkNew<vtkRenderer> renderer2;
+    renderer2->AddVolume(volume);
+    vtkNew<vtkRenderWindow> window2;
+    window2->SetMultiSamples(0);
+    window2->SetSize(90, 70);
+    window2->AddRenderer(renderer2);
+    renderer2->ResetCamera();
+    window2->Render();
+    ok = trctest::CheckAgainstReference(window2, renderer2, volume, bounds, "second window") &&
+      ok;
+    renderer2->RemoveVolume(volume);
+  }
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "back in the first") && ok;
+
+  // Paper layout and the multi-pass scheme on the same data.
+  mapper->SetMeshLayoutToPaper();
+  mapper->SetTetsPerPass(2);
+  mapper->SetTileSize(32);
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "paper, 2 tets/pass") &&
+    ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
