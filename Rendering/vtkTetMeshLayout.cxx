@@ -41,7 +41,8 @@ bool vtkTetMeshLayout::Update(vtkTetMesh* mesh)
     return false;
   }
   if (!this->Valid || mesh != this->PackedMesh ||
-    mesh->GetTopologyTime() != this->PackedTopologyTime)
+    mesh->GetTopologyTime() != this->PackedTopologyTime ||
+    this->GetMTime() > this->PackedTime.GetMTime())
   {
     return this->Build(mesh);
   }
@@ -115,6 +116,7 @@ void vtkTetMeshLayout::Packed(vtkTetMesh* mesh, int what)
     this->Boundary.Array->Modified();
   }
   this->Modified();
+  this->PackedTime.Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,7 @@
 #include "vtkObject.h"
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkSmartPointer.h"                // For vtkSmartPointer
+#include "vtkTimeStamp.h"                   // For vtkTimeStamp
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -91,7 +92,8 @@ public:
   virtual bool UpdateScalars(vtkTetMesh* mesh);
 
   /**
-   * Bring the arrays up to date with the mesh, doing the least work its time stamps allow.
+   * Bring the arrays up to date with the mesh, doing the least work its time stamps allow; a
+   * changed setting of the layout (texture width or limits) takes a Build().
    */
   bool Update(vtkTetMesh* mesh);
 
@@ -210,6 +212,8 @@ protected:
   vtkMTimeType PackedTopologyTime = 0;
   vtkMTimeType PackedPointsTime = 0;
   vtkMTimeType PackedScalarsTime = 0;
+  // When the arrays were last packed: a setting changed since (MTime newer) takes a Build().
+  vtkTimeStamp PackedTime;
 
 private:
   vtkTetMeshLayout(const vtkTetMeshLayout&) = delete;
