@@ -20,8 +20,10 @@
  * - nothing when neither the input nor the settings changed;
  * - points only (positions, bounds and shift, orientation and degeneracy checks) when only the
  *   point coordinates changed, as for a deforming mesh whose topology is fixed. Should a
- *   tetrahedron turn inside out, the builder falls back to a full build. Duplicate points and
- *   cracks are not searched again on this path: their counts are those of the last full build;
+ *   tetrahedron turn inside out (or a reoriented one become flat), the builder falls back to a
+ *   full build, so the result always equals a full build of the moved mesh (tetrahedra in the
+ *   order of the last full build). Duplicate points and cracks are not searched again on this
+ *   path: their counts are those of the last full build;
  * - scalars only when only the scalar array (or the scalar settings) changed;
  * - everything when the cells, the number of points, the input object or a topology setting
  *   (SpatialOrdering, DegeneracyTolerance) changed.
@@ -46,7 +48,8 @@
  * (VectorMode Component with VectorComponent) or to its magnitude (VectorMode Magnitude).
  *
  * Validation (into the mesh's vtkTetMeshValidationReport): inverted tetrahedra (reoriented),
- * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept), non-manifold faces
+ * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept, never
+ * reoriented: the sign of a zero volume is noise), non-manifold faces
  * (more than two tetrahedra on one face: tetrahedra on opposite sides are paired, the rest are
  * boundary), crack faces (boundary faces that overlap, in the same plane and facing the other
  * way, a boundary face made of coincident but distinct points), NaN/Inf scalars (their

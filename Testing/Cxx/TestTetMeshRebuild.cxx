@@ -339,6 +339,52 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
   p.Build(twin);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildNothing);
+
+  // torus_vistrails: half its tetrahedra inverted and 30 exactly flat. An exact translation
+  // (power-of-two step on double coordinates holding float values) keeps every orientation and
+  // every flat tetrahedron flat: points only, and still equal to a full build.
+  fileName = vtkTestUtilities::ExpandDataFileName(argc, argv, "Meshes/torus_vistrails.vtu");
+  reader->SetFileName(fileName);
+  delete[] fileName;
+  reader->Update();
+  vtkNew<vtkUnstructuredGrid> torus;
+  torus->DeepCopy(reader->GetOutput());
+  vtkNew<vtkPoints> doublePoints;
+  doublePoints->SetDataTypeToDouble();
+  doublePoints->DeepCopy(torus->GetPoints());
+  torus->SetPoints(doublePoints);
+  Pipeline q;
+  mesh = q.Build(torus);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfInvertedTetrahedra() == 4626);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() == 30);
+  for (vtkIdType i = 0; i < doublePoints->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    doublePoints->GetPoint(i, x);
+    doublePoints->SetPoint(i, x[0] + 0.125, x[1] - 0.25, x[2] + 0.5);
+  }
+  doublePoints->Modified();
+  q.Build(torus);
+  TRC_CHECK(q.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() == 30);
+  TRC_CHECK_EMPTY(CompareWithFullBuild(torus, q));
+  // Lifting one point of a flat tetrahedron makes it a real one; whichever way it now faces,
+  // the result equals a full build.
+  vtkIdType flat[4];
+  vtkIdType flatTet = -1;
+  for (vtkIdType t = 0; t < mesh->GetNumberOfTetrahedra() && flatTet < 0; ++t)
+  {
+    flatTet = (mesh->GetTetFlags(t) & vtkTetMesh::Degenerate) ? t : -1;
+  }
+  mesh->GetTetPointIds(flatTet, flat);
+  double x[3];
+  doublePoints->GetPoint(flat[0], x);
+  doublePoints->SetPoint(flat[0], x[0], x[1], x[2] + 1e-3);
+  doublePoints->Modified();
+  q.Build(torus);
+  TRC_CHECK(q.Builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing);
+  TRC_CHECK_EMPTY(CompareWithFullBuild(torus, q));
+
   TRC_CHECK(std::string(vtkTetMeshBuilder::GetRebuildAsString(vtkTetMeshBuilder::RebuildPoints |
               vtkTetMeshBuilder::RebuildScalars)) == "points and scalars");
   return EXIT_SUCCESS;
