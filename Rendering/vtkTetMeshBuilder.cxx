@@ -439,6 +439,11 @@ public:
   std::vector<FaceEntry> FaceEntries;
   std::vector<uint32_t> FaceCounts;
   std::vector<uint64_t> BucketStarts;
+  // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
+  std::vector<uint64_t> SortKeys;
+  std::vector<uint64_t> SortScratch;
+  std::vector<uint32_t> SortTetPoints;
+  std::vector<uint32_t> SortCellIds;
   // Likewise for duplicate points.
   std::vector<uint32_t> PointBuckets;
   std::vector<uint32_t> PointBucketStarts;
@@ -682,7 +687,8 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       tetPoints.resize(4 * static_cast<size_t>(numCells));
       cellIds.resize(static_cast<size_t>(numCells));
       std::atomic<vtkIdType> invalid(0);
-      auto copy = [&](auto* conn)
+      // Bad point ids or irregular offsets send the grid to the cell-by-cell path below.
+      auto copy = [&](auto* conn, auto* offsets)
       {
         vtkSMPTools::For(0, numCells, 16384,
           [&](vtkIdType begin, vtkIdType end)
@@ -690,6 +696,7 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
             vtkIdType bad = 0;
             for (vtkIdType c = begin; c < end; ++c)
             {
+              bad += static_cast<vtkIdType>(offsets[c]) != 4 * c ? 1 : 0;
               for (int k = 0; k < 4; ++k)
               {
                 const vtkIdType id = static_cast<vtkIdType>(conn[4 * c + k]);
@@ -703,11 +710,13 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       };
       if (cells->IsStorage64Bit())
       {
-        copy(cells->GetConnectivityArray64()->GetPointer(0));
+        copy(cells->GetConnectivityArray64()->GetPointer(0),
+          cells->GetOffsetsArray64()->GetPointer(0));
       }
       else
       {
-        copy(cells->GetConnectivityArray32()->GetPointer(0));
+        copy(cells->GetConnectivityArray32()->GetPointer(0),
+          cells->GetOffsetsArray32()->GetPointer(0));
       }
       if (invalid == 0)
       {
@@ -764,10 +773,9 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       }
       else
       {
-        vtkNew<vtkIdList> ids;
-        ids->SetNumberOfIds(npts);
-        std::copy(pts, pts + npts, ids->GetPointer(0));
-        addToSplit(type, ids, c);
+        ptIds->SetNumberOfIds(npts);
+        std::copy(pts, pts + npts, ptIds->GetPointer(0));
+        addToSplit(type, ptIds, c);
       }
     }
   }
@@ -855,9 +863,9 @@ void vtkTetMeshBuilder::vtkInternals::SortSpatially()
     const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
     scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
   }
-  // One 64-bit key per tetrahedron: 33 bits of Morton code above the 30-bit tetrahedron id,
-  // so that a plain parallel sort of integers does all the work.
-  std::vector<uint64_t> keys(static_cast<size_t>(numTets));
+  // One 64-bit key per tetrahedron: 33 bits of Morton code above the 30-bit tetrahedron id.
+  std::vector<uint64_t>& keys = this->SortKeys;
+  keys.resize(static_cast<size_t>(numTets));
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -875,9 +883,34 @@ void vtkTetMeshBuilder::vtkInternals::SortSpatially()
         keys[t] = (code << 30) | static_cast<uint64_t>(t);
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
-  std::vector<uint32_t> tetPoints(mesh->TetPoints.size());
-  std::vector<uint32_t> cellIds(mesh->TetInputCellIds.size());
+  // Three stable counting passes of 11 bits over the code (least significant first): linear,
+  // and ties stay in input order.
+  std::vector<uint64_t>& scratch = this->SortScratch;
+  scratch.resize(keys.size());
+  for (int shift = 30; shift < 63; shift += 11)
+  {
+    size_t position[2048] = { 0 };
+    for (uint64_t key : keys)
+    {
+      ++position[(key >> shift) & 2047];
+    }
+    size_t running = 0;
+    for (size_t& slot : position)
+    {
+      const size_t n = slot;
+      slot = running;
+      running += n;
+    }
+    for (uint64_t key : keys)
+    {
+      scratch[position[(key >> shift) & 2047]++] = key;
+    }
+    keys.swap(scratch);
+  }
+  std::vector<uint32_t>& tetPoints = this->SortTetPoints;
+  std::vector<uint32_t>& cellIds = this->SortCellIds;
+  tetPoints.resize(mesh->TetPoints.size());
+  cellIds.resize(mesh->TetInputCellIds.size());
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -1750,9 +1783,10 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     {
       error = "the grid is empty";
     }
-    else if (input->GetNumberOfPoints() >= static_cast<vtkIdType>(NoNeighbor))
+    else if (input->GetNumberOfPoints() >= static_cast<vtkIdType>(NoNeighbor) ||
+      input->GetNumberOfCells() >= static_cast<vtkIdType>(NoNeighbor))
     {
-      error = "the grid has too many points (at most 2^32 - 1)";
+      error = "the grid has too many points or cells (at most 2^32 - 1 of each)";
     }
     else
     {
