@@ -518,6 +518,40 @@ public:
     }
   }
 
+  template <typename T>
+  static size_t Bytes(const std::vector<T>& v)
+  {
+    return v.capacity() * sizeof(T);
+  }
+  template <typename T>
+  static void Free(std::vector<T>& v)
+  {
+    std::vector<T>().swap(v);
+  }
+
+  vtkIdType ScratchSize() const
+  {
+    return static_cast<vtkIdType>(Bytes(this->FaceEntries) + Bytes(this->FaceCounts) +
+      Bytes(this->BucketStarts) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
+      Bytes(this->SortTetPoints) + Bytes(this->SortCellIds) + Bytes(this->PointBuckets) +
+      Bytes(this->PointBucketStarts) + Bytes(this->PointOrder) + Bytes(this->Canonical));
+  }
+
+  void ReleaseScratch()
+  {
+    Free(this->FaceEntries);
+    Free(this->FaceCounts);
+    Free(this->BucketStarts);
+    Free(this->SortKeys);
+    Free(this->SortScratch);
+    Free(this->SortTetPoints);
+    Free(this->SortCellIds);
+    Free(this->PointBuckets);
+    Free(this->PointBucketStarts);
+    Free(this->PointOrder);
+    Free(this->Canonical);
+  }
+
   bool ReadPoints(vtkDataSet* input, std::string& error);
   void ComputeBounds();
   bool ExtractTetrahedra(vtkDataSet* input, std::string& error, vtkIdType& numTetsFromSplit);
@@ -1680,6 +1714,18 @@ vtkTetMesh* vtkTetMeshBuilder::GetMesh()
 void vtkTetMeshBuilder::Invalidate()
 {
   this->Internals->Valid = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkTetMeshBuilder::ReleaseScratchMemory()
+{
+  this->Internals->ReleaseScratch();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkTetMeshBuilder::GetScratchMemorySize()
+{
+  return this->Internals->ScratchSize();
 }
 
 //------------------------------------------------------------------------------

@@ -329,6 +329,12 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
   TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() > 0);
 
+  // Scratch memory: held between builds, released on request, without changing the mesh.
+  TRC_CHECK(p.Builder->GetScratchMemorySize() > 12 * 4 * mesh->GetNumberOfTetrahedra());
+  p.Builder->ReleaseScratchMemory();
+  TRC_CHECK(p.Builder->GetScratchMemorySize() == 0);
+  TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
+
   // Another input object with the same content: everything; Invalidate(): everything.
   vtkNew<vtkUnstructuredGrid> twin;
   twin->DeepCopy(grid);
