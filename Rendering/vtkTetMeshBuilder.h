@@ -56,7 +56,8 @@
  * tetrahedra flagged transparent) and duplicate points (exactly equal coordinates).
  *
  * Work is spread over threads with vtkSMPTools. Face matching buckets the faces by their
- * smallest point id with a counting sort (no hash map) and sorts each small bucket.
+ * smallest point id with a parallel counting sort (no map of faces) and pairs the faces of
+ * each small bucket through a small open-addressing table keyed by their two other ids.
  *
  * SpatialOrdering (off by default) sorts the tetrahedra along a Morton (Z-order) curve of their
  * centroids, so that tetrahedra close in space are close in memory; GetTetInputCellIds() maps
