@@ -146,6 +146,11 @@ int CheckMesh(vtkUnstructuredGrid* grid, vtkTetMesh* mesh, const Expected& expec
     flaggedInverted += (mesh->GetTetFlags()[t] & vtkTetMesh::Inverted) ? 1 : 0;
   }
   TRC_CHECK(flaggedInverted == expected.Inverted);
+  if (expected.Inverted > 0)
+  {
+    const double share = static_cast<double>(flaggedInverted) / mesh->GetNumberOfTetrahedra();
+    TRC_CHECK(share > 0.4 && share < 0.6);
+  }
   return EXIT_SUCCESS;
 }
 }
