@@ -40,6 +40,13 @@ bool vtkTetMeshLayout::Update(vtkTetMesh* mesh)
     this->Fail("no mesh");
     return false;
   }
+  if (!this->Valid && mesh == this->FailedMesh && mesh->GetMTime() == this->FailedMeshTime &&
+    this->GetMTime() <= this->FailedTime.GetMTime())
+  {
+    // The same failure as last time: say it once, not every frame.
+    this->LastUpdate = UpdatedNothing;
+    return false;
+  }
   if (!this->Valid || mesh != this->PackedMesh ||
     mesh->GetTopologyTime() != this->PackedTopologyTime ||
     this->GetMTime() > this->PackedTime.GetMTime())
@@ -65,6 +72,8 @@ bool vtkTetMeshLayout::Update(vtkTetMesh* mesh)
 //------------------------------------------------------------------------------
 bool vtkTetMeshLayout::CheckMesh(vtkTetMesh* mesh)
 {
+  this->FailedMesh = mesh;
+  this->FailedMeshTime = mesh ? mesh->GetMTime() : 0;
   if (!mesh)
   {
     this->Fail("no mesh");
@@ -87,6 +96,7 @@ void vtkTetMeshLayout::Fail(const std::string& message)
   this->LastUpdate = UpdatedNothing;
   vtkErrorMacro(<< message << ".");
   this->Modified();
+  this->FailedTime.Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -214,6 +214,11 @@ protected:
   vtkMTimeType PackedScalarsTime = 0;
   // When the arrays were last packed: a setting changed since (MTime newer) takes a Build().
   vtkTimeStamp PackedTime;
+  // The mesh (and its time) of the last attempt, and when it failed: Update() does not repeat
+  // a failure (nor its error message) while nothing changed.
+  const vtkTetMesh* FailedMesh = nullptr;
+  vtkMTimeType FailedMeshTime = 0;
+  vtkTimeStamp FailedTime;
 
 private:
   vtkTetMeshLayout(const vtkTetMeshLayout&) = delete;

@@ -250,6 +250,9 @@ int TestRealMesh(int argc, char* argv[])
   TRC_CHECK(errors->Count == 1);
   TRC_CHECK(
     std::string(paper->GetErrorMessage()).find("maximum texture size 8") != std::string::npos);
+  // Update() does not repeat the same failure (nor its error) while nothing changed.
+  TRC_CHECK(!paper->Update(mesh));
+  TRC_CHECK(errors->Count == 1);
   paper->SetMaximumTextureSize(16384);
   TRC_CHECK(paper->Update(mesh));
   TRC_CHECK(paper->GetValid());
