@@ -198,9 +198,15 @@ bool vtkTetMeshCompactLayout::UpdatePoints(vtkTetMesh* mesh)
   {
     return false;
   }
-  // The point texels carry the point scalars as well.
+  // The point texels carry the point scalars as well; point ids and neighbours, the boundary
+  // included, do not move.
   this->PackPoints(mesh);
-  this->PackCellScalars(mesh);
+  this->Arrays[PointsArray].Array->Modified();
+  if (mesh->GetHasCellScalars())
+  {
+    this->PackCellScalars(mesh);
+    this->CellScalars.Array->Modified();
+  }
   this->Packed(mesh, UpdatedPoints | UpdatedScalars);
   return true;
 }
@@ -219,11 +225,13 @@ bool vtkTetMeshCompactLayout::UpdateScalars(vtkTetMesh* mesh)
   if (mesh->GetHasCellScalars())
   {
     this->PackCellScalars(mesh);
+    this->CellScalars.Array->Modified();
   }
   else
   {
     // Only the w component changes; rewriting whole texels is as cheap and keeps one path.
     this->PackPoints(mesh);
+    this->Arrays[PointsArray].Array->Modified();
   }
   this->Packed(mesh, UpdatedScalars);
   return true;

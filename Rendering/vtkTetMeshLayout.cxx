@@ -117,13 +117,17 @@ void vtkTetMeshLayout::Packed(vtkTetMesh* mesh, int what)
   }
   this->NumberOfTetrahedra = mesh->GetNumberOfTetrahedra();
   this->LastUpdate = what;
-  for (ArrayInfo& info : this->Arrays)
+  // After a full build every array is new; partial updates mark what they rewrote.
+  if (what == UpdatedAll)
   {
-    info.Array->Modified();
-  }
-  if (this->Boundary.Array)
-  {
-    this->Boundary.Array->Modified();
+    for (ArrayInfo& info : this->Arrays)
+    {
+      info.Array->Modified();
+    }
+    if (this->Boundary.Array)
+    {
+      this->Boundary.Array->Modified();
+    }
   }
   this->Modified();
   this->PackedTime.Modified();

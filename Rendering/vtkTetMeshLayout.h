@@ -25,11 +25,12 @@
  * GetNumberOfBytesWithBoundary() includes it.
  *
  * Build() packs everything; UpdatePoints() repacks what depends on positions (the mesh's
- * topology unchanged); UpdateScalars() what depends on scalars. Update() picks the cheapest of
- * the three from the mesh's time stamps and does nothing when the mesh has not changed since.
- * Build() fails, with an error and GetValid() false, when the mesh does not fit the texture
- * limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize(); the mapper sets them from
- * GL_MAX_TEXTURE_SIZE and GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable.
+ * topology unchanged); UpdateScalars() what depends on scalars. An array's MTime changes
+ * exactly when its content is rewritten: a mapper re-uploads those arrays and no others. Update()
+ * picks the cheapest of the three from the mesh's time stamps and does nothing when the mesh has
+ * not changed since. Build() fails, with an error and GetValid() false, when the mesh does not fit
+ * the texture limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize(); the mapper sets them
+ * from GL_MAX_TEXTURE_SIZE and GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable.
  *
  * @sa vtkTetMeshPaperLayout vtkTetMeshCompactLayout vtkTetMesh
  */
@@ -64,14 +65,16 @@ public:
   };
 
   /**
-   * What the last Update() (or Build/UpdatePoints/UpdateScalars) did.
+   * What the last Update() (or Build/UpdatePoints/UpdateScalars) did: a combination of these
+   * bits (as vtkTetMeshBuilder's RebuildFlags). UpdatedAll = a full Build().
    */
   enum UpdateKinds
   {
     UpdatedNothing = 0,
     UpdatedScalars = 1,
     UpdatedPoints = 2,
-    UpdatedAll = 3
+    UpdatedTopology = 4,
+    UpdatedAll = 7
   };
 
   /**

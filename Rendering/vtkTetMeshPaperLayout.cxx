@@ -264,6 +264,11 @@ bool vtkTetMeshPaperLayout::UpdatePoints(vtkTetMesh* mesh)
   this->PackGeometry(mesh);
   this->PackScalars(mesh);
   this->PackBoundary(mesh);
+  for (ArrayInfo& info : this->Arrays)
+  {
+    info.Array->Modified();
+  }
+  this->Boundary.Array->Modified();
   this->Packed(mesh, UpdatedPoints | UpdatedScalars);
   return true;
 }
@@ -281,6 +286,7 @@ bool vtkTetMeshPaperLayout::UpdateScalars(vtkTetMesh* mesh)
     return false;
   }
   this->PackScalars(mesh);
+  this->Arrays[NeighborsAndScalarsArray].Array->Modified();
   this->Packed(mesh, UpdatedScalars);
   return true;
 }

@@ -209,8 +209,16 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(mesh->GetMTime() == meshTime);
 
   // Points only (a deforming mesh): the points path, and the same result as a full build.
+  // The compact layout rewrites (marks modified) its points only: no re-upload of the rest.
+  const vtkMTimeType tetPointsTime = p.Compact->GetArray(0)->GetMTime();
+  const vtkMTimeType boundaryTime = p.Compact->GetBoundaryArray()->GetMTime();
+  const vtkMTimeType pointsArrayTime = p.Compact->GetArray(2)->GetMTime();
   Deform(grid, 0.02);
   p.Build(grid);
+  TRC_CHECK(p.Compact->GetArray(0)->GetMTime() == tetPointsTime);
+  TRC_CHECK(p.Compact->GetArray(1)->GetMTime() < pointsArrayTime);
+  TRC_CHECK(p.Compact->GetBoundaryArray()->GetMTime() == boundaryTime);
+  TRC_CHECK(p.Compact->GetArray(2)->GetMTime() > pointsArrayTime);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints);
   TRC_CHECK(mesh->GetTopologyTime() == topologyTime);
   TRC_CHECK(mesh->GetPointsTime() > topologyTime);
