@@ -18,7 +18,8 @@
  * field reduced to one double per point or per tetrahedron, the input cell of every tetrahedron
  * and a vtkTetMeshValidationReport. The conventions are those of docs/design.md:
  *
- * - tetrahedron t has points p0..p3 with det[p1-p0, p2-p0, p3-p0] >= 0;
+ * - tetrahedron t has points p0..p3 with det[p1-p0, p2-p0, p3-p0] > 0, unless it is degenerate
+ *   (flat to the builder's tolerance, then the sign is rounding noise and left as given);
  * - face i is the face opposite point i, its points in outward (counter-clockwise seen from
  *   outside) order given by GetFacePointIndices();
  * - the neighbour across face i is one word (n << 2) | j, j being the shared face in n, or
@@ -63,7 +64,8 @@ public:
    * - Degenerate: zero or negligible volume (see vtkTetMeshBuilder::SetDegeneracyTolerance);
    *   kept in the mesh so that its neighbours stay connected through it.
    * - NonFiniteScalars: touches a NaN or infinite scalar; it is traversed but transparent.
-   * - Inverted: was negatively oriented in the input and has been reoriented (p2 <-> p3).
+   * - Inverted: was negatively oriented (and not degenerate) in the input and has been
+   *   reoriented (p2 <-> p3).
    */
   enum TetFlag
   {

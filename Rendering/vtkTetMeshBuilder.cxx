@@ -331,6 +331,24 @@ bool TrianglesOverlap2D(const double a[3][2], const double b[3][2], double eps)
 }
 
 //------------------------------------------------------------------------------
+// A vtkTimerLog event for the lifetime of the object (a no-op unless logging is on).
+class ScopedEvent
+{
+public:
+  explicit ScopedEvent(const char* name)
+    : Name(name)
+  {
+    vtkTimerLog::MarkStartEvent(name);
+  }
+  ~ScopedEvent() { vtkTimerLog::MarkEndEvent(this->Name); }
+  ScopedEvent(const ScopedEvent&) = delete;
+  ScopedEvent& operator=(const ScopedEvent&) = delete;
+
+private:
+  const char* Name;
+};
+
+//------------------------------------------------------------------------------
 // Spreads the low 11 bits of v so that they occupy every third bit.
 inline uint64_t SpreadBits3(uint64_t v)
 {
@@ -421,6 +439,16 @@ public:
   std::vector<FaceEntry> FaceEntries;
   std::vector<uint32_t> FaceCounts;
   std::vector<uint64_t> BucketStarts;
+  // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
+  std::vector<uint64_t> SortKeys;
+  std::vector<uint64_t> SortScratch;
+  std::vector<uint32_t> SortTetPoints;
+  std::vector<uint32_t> SortCellIds;
+  // Likewise for duplicate points.
+  std::vector<uint32_t> PointBuckets;
+  std::vector<uint32_t> PointBucketStarts;
+  std::vector<uint32_t> PointOrder;
+  std::vector<uint32_t> Canonical;
 
   void GetTopologyStamps(vtkDataSet* input, std::vector<Stamp>& stamps)
   {
@@ -488,6 +516,40 @@ public:
     {
       report->SetError(this->ScalarError);
     }
+  }
+
+  template <typename T>
+  static size_t Bytes(const std::vector<T>& v)
+  {
+    return v.capacity() * sizeof(T);
+  }
+  template <typename T>
+  static void Free(std::vector<T>& v)
+  {
+    std::vector<T>().swap(v);
+  }
+
+  vtkIdType ScratchSize() const
+  {
+    return static_cast<vtkIdType>(Bytes(this->FaceEntries) + Bytes(this->FaceCounts) +
+      Bytes(this->BucketStarts) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
+      Bytes(this->SortTetPoints) + Bytes(this->SortCellIds) + Bytes(this->PointBuckets) +
+      Bytes(this->PointBucketStarts) + Bytes(this->PointOrder) + Bytes(this->Canonical));
+  }
+
+  void ReleaseScratch()
+  {
+    Free(this->FaceEntries);
+    Free(this->FaceCounts);
+    Free(this->BucketStarts);
+    Free(this->SortKeys);
+    Free(this->SortScratch);
+    Free(this->SortTetPoints);
+    Free(this->SortCellIds);
+    Free(this->PointBuckets);
+    Free(this->PointBucketStarts);
+    Free(this->PointOrder);
+    Free(this->Canonical);
   }
 
   bool ReadPoints(vtkDataSet* input, std::string& error);
@@ -659,7 +721,8 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       tetPoints.resize(4 * static_cast<size_t>(numCells));
       cellIds.resize(static_cast<size_t>(numCells));
       std::atomic<vtkIdType> invalid(0);
-      auto copy = [&](auto* conn)
+      // Bad point ids or irregular offsets send the grid to the cell-by-cell path below.
+      auto copy = [&](auto* conn, auto* offsets)
       {
         vtkSMPTools::For(0, numCells, 16384,
           [&](vtkIdType begin, vtkIdType end)
@@ -667,6 +730,7 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
             vtkIdType bad = 0;
             for (vtkIdType c = begin; c < end; ++c)
             {
+              bad += static_cast<vtkIdType>(offsets[c]) != 4 * c ? 1 : 0;
               for (int k = 0; k < 4; ++k)
               {
                 const vtkIdType id = static_cast<vtkIdType>(conn[4 * c + k]);
@@ -680,11 +744,13 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       };
       if (cells->IsStorage64Bit())
       {
-        copy(cells->GetConnectivityArray64()->GetPointer(0));
+        copy(cells->GetConnectivityArray64()->GetPointer(0),
+          cells->GetOffsetsArray64()->GetPointer(0));
       }
       else
       {
-        copy(cells->GetConnectivityArray32()->GetPointer(0));
+        copy(cells->GetConnectivityArray32()->GetPointer(0),
+          cells->GetOffsetsArray32()->GetPointer(0));
       }
       if (invalid == 0)
       {
@@ -741,10 +807,9 @@ bool vtkTetMeshBuilder::vtkInternals::ExtractTetrahedra(
       }
       else
       {
-        vtkNew<vtkIdList> ids;
-        ids->SetNumberOfIds(npts);
-        std::copy(pts, pts + npts, ids->GetPointer(0));
-        addToSplit(type, ids, c);
+        ptIds->SetNumberOfIds(npts);
+        std::copy(pts, pts + npts, ptIds->GetPointer(0));
+        addToSplit(type, ptIds, c);
       }
     }
   }
@@ -832,9 +897,9 @@ void vtkTetMeshBuilder::vtkInternals::SortSpatially()
     const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
     scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
   }
-  // One 64-bit key per tetrahedron: 33 bits of Morton code above the 30-bit tetrahedron id,
-  // so that a plain parallel sort of integers does all the work.
-  std::vector<uint64_t> keys(static_cast<size_t>(numTets));
+  // One 64-bit key per tetrahedron: 33 bits of Morton code above the 30-bit tetrahedron id.
+  std::vector<uint64_t>& keys = this->SortKeys;
+  keys.resize(static_cast<size_t>(numTets));
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -852,9 +917,34 @@ void vtkTetMeshBuilder::vtkInternals::SortSpatially()
         keys[t] = (code << 30) | static_cast<uint64_t>(t);
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
-  std::vector<uint32_t> tetPoints(mesh->TetPoints.size());
-  std::vector<uint32_t> cellIds(mesh->TetInputCellIds.size());
+  // Three stable counting passes of 11 bits over the code (least significant first): linear,
+  // and ties stay in input order.
+  std::vector<uint64_t>& scratch = this->SortScratch;
+  scratch.resize(keys.size());
+  for (int shift = 30; shift < 63; shift += 11)
+  {
+    size_t position[2048] = { 0 };
+    for (uint64_t key : keys)
+    {
+      ++position[(key >> shift) & 2047];
+    }
+    size_t running = 0;
+    for (size_t& slot : position)
+    {
+      const size_t n = slot;
+      slot = running;
+      running += n;
+    }
+    for (uint64_t key : keys)
+    {
+      scratch[position[(key >> shift) & 2047]++] = key;
+    }
+    keys.swap(scratch);
+  }
+  std::vector<uint32_t>& tetPoints = this->SortTetPoints;
+  std::vector<uint32_t>& cellIds = this->SortCellIds;
+  tetPoints.resize(mesh->TetPoints.size());
+  cellIds.resize(mesh->TetInputCellIds.size());
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -905,9 +995,16 @@ bool vtkTetMeshBuilder::vtkInternals::OrientAndClassify(double tolerance, bool a
           { Dot(e1, e1), Dot(e2, e2), Dot(e3, e3), Dot(e4, e4), Dot(e5, e5), Dot(e6, e6) });
         const double l3 = l2 * std::sqrt(l2);
         uint8_t f = flags[t] & static_cast<uint8_t>(~vtkTetMesh::Degenerate);
+        // 6|V| <= tol L^3; a tetrahedron with a repeated point has det exactly 0. The sign of a
+        // degenerate tetrahedron's volume is rounding noise: it is never reoriented.
+        const bool degenerate = std::abs(det) <= tolerance * l3;
         if (!allowFlips)
         {
-          if (det < 0.0)
+          // What a full build of these positions would store: the input order unless the input
+          // is inverted (and not degenerate). Anything else takes a full build.
+          const bool swapped = (f & vtkTetMesh::Inverted) != 0;
+          const bool wantSwap = (swapped ? -det : det) < 0.0 && !degenerate;
+          if (wantSwap != swapped)
           {
             needsFlip = true;
           }
@@ -915,14 +1012,13 @@ bool vtkTetMeshBuilder::vtkInternals::OrientAndClassify(double tolerance, bool a
         else
         {
           f &= static_cast<uint8_t>(~vtkTetMesh::Inverted);
-          if (det < 0.0)
+          if (det < 0.0 && !degenerate)
           {
             std::swap(ids[2], ids[3]);
             f |= vtkTetMesh::Inverted;
           }
         }
-        // 6|V| <= tol L^3; a tetrahedron with a repeated point has det exactly 0.
-        if (std::abs(det) <= tolerance * l3)
+        if (degenerate)
         {
           f |= vtkTetMesh::Degenerate;
         }
@@ -997,9 +1093,10 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
     start[v] = running;
     for (int b = 0; b < blocks; ++b)
     {
+      // Absolute positions: 4 * 2^30 faces at most, so they fit 32 bits.
       uint32_t& c = counts[static_cast<size_t>(b) * numPoints + v];
       const uint32_t n = c;
-      c = static_cast<uint32_t>(running - start[v]);
+      c = static_cast<uint32_t>(running);
       running += n;
     }
   }
@@ -1018,7 +1115,7 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
         ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
           [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
           {
-            FaceEntry& e = entries[start[lo] + offset[lo]++];
+            FaceEntry& e = entries[offset[lo]++];
             e.Mid = mid;
             e.Hi = hi;
             e.Face = face;
@@ -1032,6 +1129,11 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
     {
       vtkIdType localNonManifold = 0;
       std::vector<uint32_t> even, odd;
+      // A small open-addressing table per bucket: slot -> 1 + index of the first face seen
+      // with that key, the top bit set once it is paired. Linear in the bucket's size, where a
+      // sort is not, and buckets of meshes numbered at random hold dozens of faces.
+      std::vector<uint32_t> table;
+      constexpr uint32_t Paired = 0x80000000u;
       for (vtkIdType v = vb; v < ve; ++v)
       {
         FaceEntry* first = entries + start[v];
@@ -1041,25 +1143,58 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
         {
           continue;
         }
-        if (n <= 32)
+        size_t size = 8;
+        while (size < 2 * static_cast<size_t>(n))
         {
-          // Insertion sort: buckets are small and often nearly sorted (tetrahedra in order).
-          for (FaceEntry* i = first + 1; i < last; ++i)
+          size <<= 1;
+        }
+        if (table.size() < size)
+        {
+          table.resize(size);
+        }
+        std::fill(table.begin(), table.begin() + size, 0u);
+        const size_t mask = size - 1;
+        bool thirdFace = false;
+        for (ptrdiff_t k = 0; k < n && !thirdFace; ++k)
+        {
+          const FaceEntry& e = first[k];
+          size_t h = ((e.Mid * 0x9e3779b1u) ^ (e.Hi * 0x85ebca77u)) & mask;
+          for (;;)
           {
-            const FaceEntry x = *i;
-            FaceEntry* j = i;
-            while (j > first && FaceEntryLess(x, *(j - 1)))
+            const uint32_t slot = table[h];
+            if (slot == 0)
             {
-              *j = *(j - 1);
-              --j;
+              table[h] = static_cast<uint32_t>(k + 1);
+              break;
             }
-            *j = x;
+            const FaceEntry& o = first[(slot & ~Paired) - 1];
+            if (SameFace(o, e))
+            {
+              if (slot & Paired)
+              {
+                thirdFace = true;
+              }
+              else
+              {
+                neighbors[o.Face] = e.Face;
+                neighbors[e.Face] = o.Face;
+                table[h] = slot | Paired;
+              }
+              break;
+            }
+            h = (h + 1) & mask;
           }
         }
-        else
+        if (!thirdFace)
         {
-          std::sort(first, last, FaceEntryLess);
+          continue;
         }
+        // A face shared by more than two tetrahedra (rare): start the bucket over, sorted.
+        for (FaceEntry* e = first; e < last; ++e)
+        {
+          neighbors[e->Face] = NoNeighbor;
+        }
+        std::sort(first, last, FaceEntryLess);
         for (FaceEntry* run = first; run < last;)
         {
           FaceEntry* runEnd = run + 1;
@@ -1075,9 +1210,8 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
           }
           else if (m > 2)
           {
-            // More than two tetrahedra on one face. Only tetrahedra on opposite sides can be
-            // neighbours (a ray leaving one enters the other); pair them in order, leave the
-            // rest as boundary faces.
+            // Only tetrahedra on opposite sides can be neighbours (a ray leaving one enters
+            // the other): pair them in order, leave the rest as boundary faces.
             ++localNonManifold;
             even.clear();
             odd.clear();
@@ -1136,7 +1270,7 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
 }
 
 //------------------------------------------------------------------------------
-// Duplicate points: a parallel sort of point ids by coordinates. Crack faces: boundary faces
+// Duplicate points: a hash of the coordinates, bucketed. Crack faces: boundary faces
 // that overlap another boundary face made of coincident but distinct points (same plane,
 // facing the other way, interiors intersecting), as along an unwelded seam.
 void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
@@ -1150,10 +1284,15 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
   {
     return;
   }
-  // Sort (hash << 32 | id) integers rather than ids with a comparator that reads coordinates:
-  // equal coordinates have equal hashes, and the rare unequal ones that collide are told apart
-  // below by comparing coordinates.
-  std::vector<uint64_t> keys(static_cast<size_t>(numPoints));
+  // Points bucketed by a hash of their coordinates with a counting sort (a few points per
+  // bucket): equal coordinates share a bucket, where they are compared exactly.
+  size_t numBuckets = 1;
+  while (numBuckets < static_cast<size_t>(numPoints) / 2)
+  {
+    numBuckets <<= 1;
+  }
+  std::vector<uint32_t>& bucketOf = this->PointBuckets;
+  bucketOf.resize(static_cast<size_t>(numPoints));
   vtkSMPTools::For(0, numPoints, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -1169,38 +1308,46 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
           h = (h ^ bits) * 0xff51afd7ed558ccdull;
           h ^= h >> 29;
         }
-        keys[i] = (h & 0xffffffff00000000ull) | static_cast<uint64_t>(i);
+        bucketOf[i] = static_cast<uint32_t>((h >> 20) & (numBuckets - 1));
       }
     });
-  vtkSMPTools::Sort(keys.begin(), keys.end());
+  std::vector<uint32_t>& bucketStart = this->PointBucketStarts;
+  bucketStart.assign(numBuckets + 1, 0u);
+  for (uint32_t b : bucketOf)
+  {
+    ++bucketStart[b + 1];
+  }
+  std::partial_sum(bucketStart.begin(), bucketStart.end(), bucketStart.begin());
+  std::vector<uint32_t>& order = this->PointOrder;
+  order.resize(static_cast<size_t>(numPoints));
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    // bucketStart[b] runs ahead while filling bucket b - 1: shift back afterwards.
+    order[bucketStart[bucketOf[i]]++] = static_cast<uint32_t>(i);
+  }
+  std::copy_backward(bucketStart.begin(), bucketStart.end() - 1, bucketStart.end());
+  bucketStart[0] = 0;
   // canonical[v]: the smallest id with v's coordinates (only where v has duplicates).
-  std::vector<uint32_t> canonical;
+  std::vector<uint32_t>& canonical = this->Canonical;
+  canonical.clear();
   vtkIdType duplicates = 0;
-  auto samePoint = [p](uint64_t a, uint64_t b)
+  for (size_t b = 0; b < numBuckets; ++b)
   {
-    const double* pa = p + 3 * (a & 0xffffffffull);
-    const double* pb = p + 3 * (b & 0xffffffffull);
-    return pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2];
-  };
-  for (size_t i = 0; i < keys.size();)
-  {
-    size_t j = i + 1;
-    while (j < keys.size() && (keys[j] >> 32) == (keys[i] >> 32))
+    // Ids ascend inside a bucket: the first of a group is its smallest.
+    for (uint32_t k = bucketStart[b]; k + 1 < bucketStart[b + 1]; ++k)
     {
-      ++j;
-    }
-    // keys[i, j) share a hash; group them by coordinates (ids ascend inside the run).
-    for (size_t k = i; k + 1 < j; ++k)
-    {
-      const uint32_t idK = static_cast<uint32_t>(keys[k]);
+      const uint32_t idK = order[k];
       if (!canonical.empty() && canonical[idK] != NoNeighbor)
       {
         continue; // already grouped with an earlier point
       }
-      for (size_t m = k + 1; m < j; ++m)
+      const double* pk = p + 3 * static_cast<size_t>(idK);
+      for (uint32_t m = k + 1; m < bucketStart[b + 1]; ++m)
       {
-        const uint32_t idM = static_cast<uint32_t>(keys[m]);
-        if ((canonical.empty() || canonical[idM] == NoNeighbor) && samePoint(keys[k], keys[m]))
+        const uint32_t idM = order[m];
+        const double* pm = p + 3 * static_cast<size_t>(idM);
+        if ((canonical.empty() || canonical[idM] == NoNeighbor) && pk[0] == pm[0] &&
+          pk[1] == pm[1] && pk[2] == pm[2])
         {
           if (canonical.empty())
           {
@@ -1212,7 +1359,6 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
         }
       }
     }
-    i = j;
   }
   this->NumberOfDuplicatePoints = duplicates;
   if (duplicates == 0)
@@ -1317,51 +1463,58 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
     return TrianglesOverlap2D(a2, b2, 1e-9 * size);
   };
 
-  vtkIdType cracks = 0;
-  std::vector<uint32_t> candidates;
-  for (size_t b = 0; b < boundary.size(); ++b)
-  {
-    const uint32_t f = boundary[b];
-    uint32_t ids[3] = { facePoint(f, 0), facePoint(f, 1), facePoint(f, 2) };
-    candidates.clear();
-    for (int k = 0; k < 3; ++k)
+  // Each boundary face is tested on its own: in parallel.
+  std::atomic<vtkIdType> cracks(0);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(boundary.size()), 1024,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const uint32_t v = ids[k];
-      if (canonical[v] == NoNeighbor)
+      vtkIdType found = 0;
+      std::vector<uint32_t> candidates;
+      for (vtkIdType b = begin; b < end; ++b)
       {
-        continue;
-      }
-      auto range =
-        std::equal_range(links.begin(), links.end(), std::make_pair(canonical[v], uint32_t(0)),
-          [](const std::pair<uint32_t, uint32_t>& x, const std::pair<uint32_t, uint32_t>& y)
-          { return x.first < y.first; });
-      for (auto it = range.first; it != range.second; ++it)
-      {
-        const uint32_t g = boundary[it->second];
-        // Only faces that reach this location through another point id: coincident but
-        // not shared.
-        bool usesV = false;
-        for (int m = 0; m < 3; ++m)
+        const uint32_t f = boundary[b];
+        const uint32_t ids[3] = { facePoint(f, 0), facePoint(f, 1), facePoint(f, 2) };
+        candidates.clear();
+        for (int k = 0; k < 3; ++k)
         {
-          usesV = usesV || facePoint(g, m) == v;
+          const uint32_t v = ids[k];
+          if (canonical[v] == NoNeighbor)
+          {
+            continue;
+          }
+          auto range =
+            std::equal_range(links.begin(), links.end(), std::make_pair(canonical[v], uint32_t(0)),
+              [](const std::pair<uint32_t, uint32_t>& x, const std::pair<uint32_t, uint32_t>& y)
+              { return x.first < y.first; });
+          for (auto it = range.first; it != range.second; ++it)
+          {
+            const uint32_t g = boundary[it->second];
+            // Only faces that reach this location through another point id: coincident but
+            // not shared.
+            bool usesV = false;
+            for (int m = 0; m < 3; ++m)
+            {
+              usesV = usesV || facePoint(g, m) == v;
+            }
+            if (g != f && !usesV)
+            {
+              candidates.push_back(g);
+            }
+          }
         }
-        if (g != f && !usesV)
+        std::sort(candidates.begin(), candidates.end());
+        candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+        for (uint32_t g : candidates)
         {
-          candidates.push_back(g);
+          if (overlaps(f, g))
+          {
+            ++found;
+            break;
+          }
         }
       }
-    }
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    for (uint32_t g : candidates)
-    {
-      if (overlaps(f, g))
-      {
-        ++cracks;
-        break;
-      }
-    }
-  }
+      cracks += found;
+    });
   this->NumberOfCrackFaces = cracks;
 }
 
@@ -1564,6 +1717,18 @@ void vtkTetMeshBuilder::Invalidate()
 }
 
 //------------------------------------------------------------------------------
+void vtkTetMeshBuilder::ReleaseScratchMemory()
+{
+  this->Internals->ReleaseScratch();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkTetMeshBuilder::GetScratchMemorySize()
+{
+  return this->Internals->ScratchSize();
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTetMeshBuilder::GetRebuildAsString(int rebuild)
 {
   switch (rebuild & RebuildAll)
@@ -1619,6 +1784,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   {
     // Deforming mesh: new positions, same tetrahedra.
     std::string error;
+    ScopedEvent event("vtkTetMeshBuilder: points only");
     if (!in.ReadPoints(input, error))
     {
       in.TopologyError = error;
@@ -1663,14 +1829,25 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     {
       error = "the grid is empty";
     }
-    else if (input->GetNumberOfPoints() >= static_cast<vtkIdType>(NoNeighbor))
+    else if (input->GetNumberOfPoints() >= static_cast<vtkIdType>(NoNeighbor) ||
+      input->GetNumberOfCells() >= static_cast<vtkIdType>(NoNeighbor))
     {
-      error = "the grid has too many points (at most 2^32 - 1)";
+      error = "the grid has too many points or cells (at most 2^32 - 1 of each)";
     }
-    else if (in.ReadPoints(input, error) && in.ExtractTetrahedra(input, error, numTetsFromSplit))
+    else
     {
+      bool ok;
+      {
+        ScopedEvent event("vtkTetMeshBuilder: points");
+        ok = in.ReadPoints(input, error);
+      }
+      if (ok)
+      {
+        ScopedEvent event("vtkTetMeshBuilder: cells");
+        ok = in.ExtractTetrahedra(input, error, numTetsFromSplit);
+      }
       const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
-      if (numTets == 0)
+      if (ok && numTets == 0)
       {
         std::ostringstream text;
         text << "the grid has no 3D cells (" << in.NumberOfIgnoredCells
@@ -1682,7 +1859,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
         text << ")";
         error = text.str();
       }
-      else if (numTets > MaxTetrahedra)
+      else if (ok && numTets > MaxTetrahedra)
       {
         std::ostringstream text;
         text << "the grid gives " << numTets << " tetrahedra, more than the 2^30 a mesh can hold";
@@ -1709,28 +1886,26 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
                         << " cells of dimension lower than 3 (or of unsupported types) and "
                         << in.NumberOfInvalidCells << " invalid cells (bad point ids).");
       }
-      // Phase times go to the debug output (builder->DebugOn()): face matching is the part
-      // that grows fastest with the mesh.
-      double times[6];
-      times[0] = vtkTimerLog::GetUniversalTime();
+      // Each phase is a vtkTimerLog event (recorded when vtkTimerLog::LoggingOn()): the
+      // benchmark prints them, face matching being the part that grows fastest.
       if (this->SpatialOrdering)
       {
+        ScopedEvent event("vtkTetMeshBuilder: spatial sort");
         in.SortSpatially();
       }
-      times[1] = vtkTimerLog::GetUniversalTime();
-      in.OrientAndClassify(this->DegeneracyTolerance, true);
-      times[2] = vtkTimerLog::GetUniversalTime();
-      in.MatchFaces();
-      times[3] = vtkTimerLog::GetUniversalTime();
-      in.CollectBoundaryFaces();
-      times[4] = vtkTimerLog::GetUniversalTime();
-      in.FindDuplicatesAndCracks();
-      times[5] = vtkTimerLog::GetUniversalTime();
-      vtkDebugMacro(<< "full build phases (ms): read and extract " << 1e3 * (times[0] - start)
-                    << ", spatial sort " << 1e3 * (times[1] - times[0]) << ", orientation "
-                    << 1e3 * (times[2] - times[1]) << ", face matching "
-                    << 1e3 * (times[3] - times[2]) << ", boundary " << 1e3 * (times[4] - times[3])
-                    << ", duplicates and cracks " << 1e3 * (times[5] - times[4]));
+      {
+        ScopedEvent event("vtkTetMeshBuilder: orientation");
+        in.OrientAndClassify(this->DegeneracyTolerance, true);
+      }
+      {
+        ScopedEvent event("vtkTetMeshBuilder: face matching");
+        in.MatchFaces();
+        in.CollectBoundaryFaces();
+      }
+      {
+        ScopedEvent event("vtkTetMeshBuilder: duplicates and cracks");
+        in.FindDuplicatesAndCracks();
+      }
     }
     in.Input = input;
     in.TopologyStamps = topology;
@@ -1749,6 +1924,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     in.ScalarError.clear();
     if (in.TopologyError.empty())
     {
+      ScopedEvent event("vtkTetMeshBuilder: scalars");
       std::string error;
       if (!in.ReadScalars(input, this, error))
       {

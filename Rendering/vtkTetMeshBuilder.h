@@ -20,8 +20,10 @@
  * - nothing when neither the input nor the settings changed;
  * - points only (positions, bounds and shift, orientation and degeneracy checks) when only the
  *   point coordinates changed, as for a deforming mesh whose topology is fixed. Should a
- *   tetrahedron turn inside out, the builder falls back to a full build. Duplicate points and
- *   cracks are not searched again on this path: their counts are those of the last full build;
+ *   tetrahedron turn inside out (or a reoriented one become flat), the builder falls back to a
+ *   full build, so the result always equals a full build of the moved mesh (tetrahedra in the
+ *   order of the last full build). Duplicate points and cracks are not searched again on this
+ *   path: their counts are those of the last full build;
  * - scalars only when only the scalar array (or the scalar settings) changed;
  * - everything when the cells, the number of points, the input object or a topology setting
  *   (SpatialOrdering, DegeneracyTolerance) changed.
@@ -46,14 +48,16 @@
  * (VectorMode Component with VectorComponent) or to its magnitude (VectorMode Magnitude).
  *
  * Validation (into the mesh's vtkTetMeshValidationReport): inverted tetrahedra (reoriented),
- * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept), non-manifold faces
+ * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept, never
+ * reoriented: the sign of a zero volume is noise), non-manifold faces
  * (more than two tetrahedra on one face: tetrahedra on opposite sides are paired, the rest are
  * boundary), crack faces (boundary faces that overlap, in the same plane and facing the other
  * way, a boundary face made of coincident but distinct points), NaN/Inf scalars (their
  * tetrahedra flagged transparent) and duplicate points (exactly equal coordinates).
  *
  * Work is spread over threads with vtkSMPTools. Face matching buckets the faces by their
- * smallest point id with a counting sort (no hash map) and sorts each small bucket.
+ * smallest point id with a parallel counting sort (no map of faces) and pairs the faces of
+ * each small bucket through a small open-addressing table keyed by their two other ids.
  *
  * SpatialOrdering (off by default) sorts the tetrahedra along a Morton (Z-order) curve of their
  * centroids, so that tetrahedra close in space are close in memory; GetTetInputCellIds() maps
@@ -170,6 +174,18 @@ public:
    * Forget what was built: the next Build() is a full one.
    */
   void Invalidate();
+
+  ///@{
+  /**
+   * The builder keeps its scratch buffers (face matching, spatial sort, duplicate search:
+   * about 60 bytes per tetrahedron, 95 with spatial ordering) between builds, because allocating and first touching
+   * fresh memory costs more than the work done in it. ReleaseScratchMemory() frees them (a
+   * mapper may call it once the mesh is built, when topology changes are rare);
+   * GetScratchMemorySize() says how many bytes they hold.
+   */
+  void ReleaseScratchMemory();
+  vtkIdType GetScratchMemorySize();
+  ///@}
 
   ///@{
   /**

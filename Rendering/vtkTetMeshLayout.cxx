@@ -40,8 +40,16 @@ bool vtkTetMeshLayout::Update(vtkTetMesh* mesh)
     this->Fail("no mesh");
     return false;
   }
+  if (!this->Valid && mesh == this->FailedMesh && mesh->GetMTime() == this->FailedMeshTime &&
+    this->GetMTime() <= this->FailedTime.GetMTime())
+  {
+    // The same failure as last time: say it once, not every frame.
+    this->LastUpdate = UpdatedNothing;
+    return false;
+  }
   if (!this->Valid || mesh != this->PackedMesh ||
-    mesh->GetTopologyTime() != this->PackedTopologyTime)
+    mesh->GetTopologyTime() != this->PackedTopologyTime ||
+    this->GetMTime() > this->PackedTime.GetMTime())
   {
     return this->Build(mesh);
   }
@@ -64,6 +72,8 @@ bool vtkTetMeshLayout::Update(vtkTetMesh* mesh)
 //------------------------------------------------------------------------------
 bool vtkTetMeshLayout::CheckMesh(vtkTetMesh* mesh)
 {
+  this->FailedMesh = mesh;
+  this->FailedMeshTime = mesh ? mesh->GetMTime() : 0;
   if (!mesh)
   {
     this->Fail("no mesh");
@@ -86,6 +96,7 @@ void vtkTetMeshLayout::Fail(const std::string& message)
   this->LastUpdate = UpdatedNothing;
   vtkErrorMacro(<< message << ".");
   this->Modified();
+  this->FailedTime.Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -106,15 +117,20 @@ void vtkTetMeshLayout::Packed(vtkTetMesh* mesh, int what)
   }
   this->NumberOfTetrahedra = mesh->GetNumberOfTetrahedra();
   this->LastUpdate = what;
-  for (ArrayInfo& info : this->Arrays)
+  // After a full build every array is new; partial updates mark what they rewrote.
+  if (what == UpdatedAll)
   {
-    info.Array->Modified();
-  }
-  if (this->Boundary.Array)
-  {
-    this->Boundary.Array->Modified();
+    for (ArrayInfo& info : this->Arrays)
+    {
+      info.Array->Modified();
+    }
+    if (this->Boundary.Array)
+    {
+      this->Boundary.Array->Modified();
+    }
   }
   this->Modified();
+  this->PackedTime.Modified();
 }
 
 //------------------------------------------------------------------------------

@@ -25,11 +25,12 @@
  * GetNumberOfBytesWithBoundary() includes it.
  *
  * Build() packs everything; UpdatePoints() repacks what depends on positions (the mesh's
- * topology unchanged); UpdateScalars() what depends on scalars. Update() picks the cheapest of
- * the three from the mesh's time stamps and does nothing when the mesh has not changed since.
- * Build() fails, with an error and GetValid() false, when the mesh does not fit the texture
- * limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize(); the mapper sets them from
- * GL_MAX_TEXTURE_SIZE and GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable.
+ * topology unchanged); UpdateScalars() what depends on scalars. An array's MTime changes
+ * exactly when its content is rewritten: a mapper re-uploads those arrays and no others. Update()
+ * picks the cheapest of the three from the mesh's time stamps and does nothing when the mesh has
+ * not changed since. Build() fails, with an error and GetValid() false, when the mesh does not fit
+ * the texture limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize(); the mapper sets them
+ * from GL_MAX_TEXTURE_SIZE and GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable.
  *
  * @sa vtkTetMeshPaperLayout vtkTetMeshCompactLayout vtkTetMesh
  */
@@ -40,6 +41,7 @@
 #include "vtkObject.h"
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkSmartPointer.h"                // For vtkSmartPointer
+#include "vtkTimeStamp.h"                   // For vtkTimeStamp
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -63,14 +65,16 @@ public:
   };
 
   /**
-   * What the last Update() (or Build/UpdatePoints/UpdateScalars) did.
+   * What the last Update() (or Build/UpdatePoints/UpdateScalars) did: a combination of these
+   * bits (as vtkTetMeshBuilder's RebuildFlags). UpdatedAll = a full Build().
    */
   enum UpdateKinds
   {
     UpdatedNothing = 0,
     UpdatedScalars = 1,
     UpdatedPoints = 2,
-    UpdatedAll = 3
+    UpdatedTopology = 4,
+    UpdatedAll = 7
   };
 
   /**
@@ -91,7 +95,8 @@ public:
   virtual bool UpdateScalars(vtkTetMesh* mesh);
 
   /**
-   * Bring the arrays up to date with the mesh, doing the least work its time stamps allow.
+   * Bring the arrays up to date with the mesh, doing the least work its time stamps allow; a
+   * changed setting of the layout (texture width or limits) takes a Build().
    */
   bool Update(vtkTetMesh* mesh);
 
@@ -210,6 +215,13 @@ protected:
   vtkMTimeType PackedTopologyTime = 0;
   vtkMTimeType PackedPointsTime = 0;
   vtkMTimeType PackedScalarsTime = 0;
+  // When the arrays were last packed: a setting changed since (MTime newer) takes a Build().
+  vtkTimeStamp PackedTime;
+  // The mesh (and its time) of the last attempt, and when it failed: Update() does not repeat
+  // a failure (nor its error message) while nothing changed.
+  const vtkTetMesh* FailedMesh = nullptr;
+  vtkMTimeType FailedMeshTime = 0;
+  vtkTimeStamp FailedTime;
 
 private:
   vtkTetMeshLayout(const vtkTetMeshLayout&) = delete;

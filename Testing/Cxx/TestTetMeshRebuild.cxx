@@ -209,8 +209,16 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(mesh->GetMTime() == meshTime);
 
   // Points only (a deforming mesh): the points path, and the same result as a full build.
+  // The compact layout rewrites (marks modified) its points only: no re-upload of the rest.
+  const vtkMTimeType tetPointsTime = p.Compact->GetArray(0)->GetMTime();
+  const vtkMTimeType boundaryTime = p.Compact->GetBoundaryArray()->GetMTime();
+  const vtkMTimeType pointsArrayTime = p.Compact->GetArray(2)->GetMTime();
   Deform(grid, 0.02);
   p.Build(grid);
+  TRC_CHECK(p.Compact->GetArray(0)->GetMTime() == tetPointsTime);
+  TRC_CHECK(p.Compact->GetArray(1)->GetMTime() < pointsArrayTime);
+  TRC_CHECK(p.Compact->GetBoundaryArray()->GetMTime() == boundaryTime);
+  TRC_CHECK(p.Compact->GetArray(2)->GetMTime() > pointsArrayTime);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints);
   TRC_CHECK(mesh->GetTopologyTime() == topologyTime);
   TRC_CHECK(mesh->GetPointsTime() > topologyTime);
@@ -329,6 +337,12 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
   TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() > 0);
 
+  // Scratch memory: held between builds, released on request, without changing the mesh.
+  TRC_CHECK(p.Builder->GetScratchMemorySize() > 12 * 4 * mesh->GetNumberOfTetrahedra());
+  p.Builder->ReleaseScratchMemory();
+  TRC_CHECK(p.Builder->GetScratchMemorySize() == 0);
+  TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
+
   // Another input object with the same content: everything; Invalidate(): everything.
   vtkNew<vtkUnstructuredGrid> twin;
   twin->DeepCopy(grid);
@@ -339,6 +353,52 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
   p.Build(twin);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildNothing);
+
+  // torus_vistrails: half its tetrahedra inverted and 30 exactly flat. An exact translation
+  // (power-of-two step on double coordinates holding float values) keeps every orientation and
+  // every flat tetrahedron flat: points only, and still equal to a full build.
+  fileName = vtkTestUtilities::ExpandDataFileName(argc, argv, "Meshes/torus_vistrails.vtu");
+  reader->SetFileName(fileName);
+  delete[] fileName;
+  reader->Update();
+  vtkNew<vtkUnstructuredGrid> torus;
+  torus->DeepCopy(reader->GetOutput());
+  vtkNew<vtkPoints> doublePoints;
+  doublePoints->SetDataTypeToDouble();
+  doublePoints->DeepCopy(torus->GetPoints());
+  torus->SetPoints(doublePoints);
+  Pipeline q;
+  mesh = q.Build(torus);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfInvertedTetrahedra() == 4626);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() == 30);
+  for (vtkIdType i = 0; i < doublePoints->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    doublePoints->GetPoint(i, x);
+    doublePoints->SetPoint(i, x[0] + 0.125, x[1] - 0.25, x[2] + 0.5);
+  }
+  doublePoints->Modified();
+  q.Build(torus);
+  TRC_CHECK(q.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() == 30);
+  TRC_CHECK_EMPTY(CompareWithFullBuild(torus, q));
+  // Lifting one point of a flat tetrahedron makes it a real one; whichever way it now faces,
+  // the result equals a full build.
+  vtkIdType flat[4];
+  vtkIdType flatTet = -1;
+  for (vtkIdType t = 0; t < mesh->GetNumberOfTetrahedra() && flatTet < 0; ++t)
+  {
+    flatTet = (mesh->GetTetFlags(t) & vtkTetMesh::Degenerate) ? t : -1;
+  }
+  mesh->GetTetPointIds(flatTet, flat);
+  double x[3];
+  doublePoints->GetPoint(flat[0], x);
+  doublePoints->SetPoint(flat[0], x[0], x[1], x[2] + 1e-3);
+  doublePoints->Modified();
+  q.Build(torus);
+  TRC_CHECK(q.Builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing);
+  TRC_CHECK_EMPTY(CompareWithFullBuild(torus, q));
+
   TRC_CHECK(std::string(vtkTetMeshBuilder::GetRebuildAsString(vtkTetMeshBuilder::RebuildPoints |
               vtkTetMeshBuilder::RebuildScalars)) == "points and scalars");
   return EXIT_SUCCESS;

@@ -18,16 +18,21 @@
 #include "vtkCellType.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkTetMesh.h"
+#include "vtkTetMeshCompactLayout.h"
+#include "vtkTetMeshPaperLayout.h"
+#include "vtkTypeUInt32Array.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -250,6 +255,196 @@ inline std::vector<Triangle> SurfaceFilterBoundary(vtkDataSet* input, vtkIdType*
   }
   std::sort(faces.begin(), faces.end());
   return faces;
+}
+
+// The paper layout decodes to the mesh: vertices (shifted, in float), unit outward normals (to
+// 1e-6), neighbours as texel coordinates of the right tetrahedra, and (g, c). Returns in
+// `scalarError` the worst |g . v + c - s| at the vertices, evaluated in float from the texels
+// as a shader would, relative to the scalar scale (non-degenerate tetrahedra).
+inline std::string CheckPaperLayout(
+  vtkTetMesh* mesh, vtkTetMeshPaperLayout* layout, double* scalarError = nullptr)
+{
+  std::ostringstream error;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  auto* vertices = vtkFloatArray::SafeDownCast(layout->GetArray(0));
+  auto* normals = vtkFloatArray::SafeDownCast(layout->GetArray(1));
+  auto* nbs = vtkFloatArray::SafeDownCast(layout->GetArray(2));
+  if (!vertices || !normals || !nbs || layout->GetNumberOfArrays() != 3)
+  {
+    return "missing arrays";
+  }
+  int size[2];
+  layout->GetArrayTextureSize(0, size);
+  const vtkIdType w = size[0];
+  if (w != layout->GetTextureWidth() || size[1] != 3 * ((numTets + w - 1) / w))
+  {
+    error << "texture size " << size[0] << " x " << size[1];
+    return error.str();
+  }
+  double shift[3], range[2];
+  mesh->GetShift(shift);
+  mesh->GetScalarRange(range);
+  const double scale =
+    std::max({ std::abs(range[0]), std::abs(range[1]), range[1] - range[0], 1e-300 });
+  const double* p = mesh->GetPoints();
+  const uint32_t* tp = mesh->GetTetPoints();
+  const uint32_t* nb = mesh->GetTetNeighbors();
+  const double* s = mesh->GetPointScalars();
+  double worst = 0.0;
+  auto texel = [&](vtkFloatArray* a, vtkIdType t, int row)
+  { return a->GetPointer(0) + 4 * ((3 * (t / w) + row) * w + t % w); };
+  for (vtkIdType t = 0; t < numTets; ++t)
+  {
+    float v[4][3], n[4][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const float* tv = texel(vertices, t, k);
+      const float* tn = texel(normals, t, k);
+      for (int c = 0; c < 3; ++c)
+      {
+        v[k][c] = tv[c];
+        n[k][c] = tn[c];
+      }
+      v[3][k] = tv[3];
+      n[3][k] = tn[3];
+    }
+    double normal[12];
+    mesh->ComputeFaceNormals(t, normal, true);
+    for (int k = 0; k < 4; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const float expected = static_cast<float>(p[3 * tp[4 * t + k] + c] - shift[c]);
+        if (v[k][c] != expected)
+        {
+          error << "tet " << t << " vertex " << k << ": " << v[k][c] << " != " << expected;
+          return error.str();
+        }
+        if (std::abs(n[k][c] - normal[3 * k + c]) > 1e-6)
+        {
+          error << "tet " << t << " normal " << k << ": " << n[k][c] << " != " << normal[3 * k + c];
+          return error.str();
+        }
+      }
+      const float* a = texel(nbs, t, k / 2) + 2 * (k % 2);
+      const uint32_t word = nb[4 * t + k];
+      const float u = word == vtkTetMesh::NoNeighbor ? -1.0f : static_cast<float>((word >> 2) % w);
+      const float vv =
+        word == vtkTetMesh::NoNeighbor ? -1.0f : static_cast<float>(3 * ((word >> 2) / w));
+      if (a[0] != u || a[1] != vv)
+      {
+        error << "tet " << t << " neighbour " << k << ": (" << a[0] << ", " << a[1] << ") != (" << u
+              << ", " << vv << ")";
+        return error.str();
+      }
+    }
+    const float* gc = texel(nbs, t, 2);
+    double expected[4];
+    const bool finite = mesh->ComputeScalarGradient(t, expected);
+    for (int k = 0; k < 4; ++k)
+    {
+      const float e = finite ? static_cast<float>(expected[k])
+                             : (k < 3 ? 0.0f : std::numeric_limits<float>::infinity());
+      if (gc[k] != e)
+      {
+        error << "tet " << t << " scalar texel " << k << ": " << gc[k] << " != " << e;
+        return error.str();
+      }
+    }
+    if (s && finite && !(mesh->GetTetFlags()[t] & vtkTetMesh::Degenerate))
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        const float value = gc[0] * v[k][0] + gc[1] * v[k][1] + gc[2] * v[k][2] + gc[3];
+        worst = std::max(worst, std::abs(value - s[tp[4 * t + k]]) / scale);
+      }
+    }
+  }
+  if (scalarError)
+  {
+    *scalarError = worst;
+  }
+  if (layout->GetNumberOfBytes() != 3 * 16 * w * size[1])
+  {
+    return "byte count";
+  }
+  return std::string();
+}
+
+// The compact layout holds the mesh's arrays: tetrahedron points and neighbours as they are,
+// points shifted in float with their scalar, boundary faces as outward point ids plus word.
+inline std::string CheckCompactLayout(vtkTetMesh* mesh, vtkTetMeshCompactLayout* layout)
+{
+  std::ostringstream error;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  auto* tetPoints = vtkTypeUInt32Array::SafeDownCast(layout->GetArray(0));
+  auto* neighbors = vtkTypeUInt32Array::SafeDownCast(layout->GetArray(1));
+  auto* points = vtkFloatArray::SafeDownCast(layout->GetArray(2));
+  auto* boundary = vtkTypeUInt32Array::SafeDownCast(layout->GetBoundaryArray());
+  if (!tetPoints || !neighbors || !points || !boundary)
+  {
+    return "missing arrays";
+  }
+  if (tetPoints->GetNumberOfTuples() != numTets || neighbors->GetNumberOfTuples() != numTets ||
+    points->GetNumberOfTuples() != numPoints ||
+    boundary->GetNumberOfTuples() != mesh->GetNumberOfBoundaryFaces())
+  {
+    return "array sizes";
+  }
+  if (!std::equal(
+        mesh->GetTetPoints(), mesh->GetTetPoints() + 4 * numTets, tetPoints->GetPointer(0)) ||
+    !std::equal(
+      mesh->GetTetNeighbors(), mesh->GetTetNeighbors() + 4 * numTets, neighbors->GetPointer(0)))
+  {
+    return "tetrahedron arrays differ from the mesh";
+  }
+  double shift[3];
+  mesh->GetShift(shift);
+  const double* p = mesh->GetPoints();
+  const double* s = mesh->GetPointScalars();
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    const float* texel = points->GetPointer(4 * i);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (texel[c] != static_cast<float>(p[3 * i + c] - shift[c]))
+      {
+        error << "point " << i;
+        return error.str();
+      }
+    }
+    const float expected = !s ? 0.0f
+      : std::isfinite(s[i])   ? static_cast<float>(s[i])
+                              : std::numeric_limits<float>::infinity();
+    if (texel[3] != expected)
+    {
+      error << "point " << i << " scalar";
+      return error.str();
+    }
+  }
+  const uint32_t* faces = mesh->GetBoundaryFaces();
+  const uint32_t* tp = mesh->GetTetPoints();
+  for (vtkIdType f = 0; f < mesh->GetNumberOfBoundaryFaces(); ++f)
+  {
+    const uint32_t* texel = boundary->GetPointer(4 * f);
+    const uint32_t* ids = tp + 4 * (faces[f] >> 2);
+    const int* fp = vtkTetMesh::FacePoints[faces[f] & 3u];
+    if (texel[0] != ids[fp[0]] || texel[1] != ids[fp[1]] || texel[2] != ids[fp[2]] ||
+      texel[3] != faces[f])
+    {
+      error << "boundary face " << f;
+      return error.str();
+    }
+  }
+  const vtkIdType bytes =
+    16 * (2 * numTets + numPoints) + (mesh->GetHasCellScalars() ? 4 * numTets : 0);
+  if (layout->GetNumberOfBytes() != bytes ||
+    layout->GetNumberOfBytesWithBoundary() != bytes + 16 * mesh->GetNumberOfBoundaryFaces())
+  {
+    return "byte count";
+  }
+  return std::string();
 }
 }
 
