@@ -868,6 +868,7 @@ vtkTetReferenceRenderer::vtkTetReferenceRenderer()
   , VolumeMatrix(vtkMatrix4x4::New())
   , Volume(nullptr)
   , OpaqueDepth(nullptr)
+  , DoublePrecisionOutput(0)
   , Output(vtkImageData::New())
   , Integrator(vtkTetRayIntegrator::New())
   , NumberOfTetrahedra(0)
@@ -1136,14 +1137,25 @@ int vtkTetReferenceRenderer::Render()
     }
   };
 
-  vtkNew<vtkFloatArray> rgba;
+  vtkSmartPointer<vtkDataArray> rgba;
+  if (this->DoublePrecisionOutput)
+  {
+    rgba = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    rgba = vtkSmartPointer<vtkFloatArray>::New();
+  }
   rgba->SetName("RGBA");
   rgba->SetNumberOfComponents(4);
   rgba->SetNumberOfTuples(numPixels);
   vtkNew<vtkIntArray> counts;
   counts->SetName("NumberOfTets");
   counts->SetNumberOfTuples(numPixels);
-  float* rgbaOut = rgba->GetPointer(0);
+  float* rgbaFloat =
+    this->DoublePrecisionOutput ? nullptr : vtkFloatArray::SafeDownCast(rgba)->GetPointer(0);
+  double* rgbaDouble =
+    this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr;
   int* countOut = counts->GetPointer(0);
   const double offsetX = this->SampleOffset[0], offsetY = this->SampleOffset[1];
   vtkTetRayIntegrator* integrator = this->Integrator;
@@ -1157,8 +1169,23 @@ int vtkTetReferenceRenderer::Render()
         for (int i = 0; i < width; ++i)
         {
           const vtkIdType pixel = j * width + i;
-          float* out = rgbaOut + 4 * pixel;
-          out[0] = out[1] = out[2] = out[3] = 0.0f;
+          // Zero until a result is stored (rays that meet nothing leave early).
+          auto store = [&](const double v[4])
+          {
+            for (int k = 0; k < 4; ++k)
+            {
+              if (rgbaFloat)
+              {
+                rgbaFloat[4 * pixel + k] = static_cast<float>(v[k]);
+              }
+              else
+              {
+                rgbaDouble[4 * pixel + k] = v[k];
+              }
+            }
+          };
+          const double zero[4] = { 0.0, 0.0, 0.0, 0.0 };
+          store(zero);
           countOut[pixel] = 0;
           const double x = 2.0 * (i + offsetX) / width - 1.0;
           const double y = 2.0 * (j + offsetY) / height - 1.0;
@@ -1221,10 +1248,8 @@ int vtkTetReferenceRenderer::Render()
               break;
             }
           }
-          out[0] = static_cast<float>(color[0]);
-          out[1] = static_cast<float>(color[1]);
-          out[2] = static_cast<float>(color[2]);
-          out[3] = static_cast<float>(-std::expm1(-opticalDepth));
+          const double result[4] = { color[0], color[1], color[2], -std::expm1(-opticalDepth) };
+          store(result);
         }
       }
     });
@@ -1353,6 +1378,7 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
   os << indent << "SampleOffset: " << this->SampleOffset[0] << ", " << this->SampleOffset[1]
      << "\n";
+  os << indent << "DoublePrecisionOutput: " << this->DoublePrecisionOutput << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "LastPreparationTime: " << this->LastPreparationTime << "\n";
