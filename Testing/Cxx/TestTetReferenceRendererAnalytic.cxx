@@ -94,73 +94,6 @@ vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* input,
   return renderer->GetOutput();
 }
 
-// Checks a cube [lo, hi]^3 of constant attenuation tau and colour c pixel by pixel. Pixels whose
-// ray passes within 1e-7 of the cube's boundary (its silhouette) are left out: there the chord
-// is not defined to better than that. Returns the number of pixels checked, or -1 on failure.
-int CheckCube(vtkImageData* image, vtkCamera* camera, int width, int height, const double lo[3],
-  const double hi[3], double tau, const double c[3], const char* what)
-{
-  int checked = 0, inside = 0;
-  double worst = 0.0;
-  for (int j = 0; j < height; ++j)
-  {
-    for (int i = 0; i < width; ++i)
-    {
-      double nearP[3], farP[3], d[3];
-      trc::PixelRay(camera, width, height, i, j, nearP, farP);
-      for (int k = 0; k < 3; ++k)
-      {
-        d[k] = farP[k] - nearP[k];
-      }
-      double t0, t1, u0, u1, w0, w1;
-      const double e = 1e-7;
-      const double loIn[3] = { lo[0] + e, lo[1] + e, lo[2] + e };
-      const double hiIn[3] = { hi[0] - e, hi[1] - e, hi[2] - e };
-      const double loOut[3] = { lo[0] - e, lo[1] - e, lo[2] - e };
-      const double hiOut[3] = { hi[0] + e, hi[1] + e, hi[2] + e };
-      const bool hit = trc::SlabInterval(nearP, d, lo, hi, 0.0, 1.0, t0, t1);
-      const bool hitIn = trc::SlabInterval(nearP, d, loIn, hiIn, 0.0, 1.0, u0, u1);
-      const bool hitOut = trc::SlabInterval(nearP, d, loOut, hiOut, 0.0, 1.0, w0, w1);
-      if (hitIn != hitOut)
-      {
-        continue; // on the silhouette
-      }
-      const double chord = hit ? (t1 - t0) * Length(d) : 0.0;
-      double rgba[4];
-      trc::Pixel(image, i, j, rgba);
-      const double alpha = -std::expm1(-tau * chord);
-      double diff = std::fabs(rgba[3] - alpha);
-      for (int k = 0; k < 3; ++k)
-      {
-        diff = std::max(diff, std::fabs(rgba[k] - c[k] * alpha));
-      }
-      worst = std::max(worst, diff);
-      if (diff > 1e-12)
-      {
-        std::cerr << what << ": pixel (" << i << ", " << j << ") alpha " << rgba[3] << ", expected "
-                  << alpha << " (chord " << chord << "), " << trc::TetCount(image, i, j)
-                  << " tetrahedra" << std::endl;
-        return -1;
-      }
-      if (hitIn && trc::TetCount(image, i, j) == 0)
-      {
-        std::cerr << what << ": pixel (" << i << ", " << j << ") crosses no tetrahedron"
-                  << std::endl;
-        return -1;
-      }
-      ++checked;
-      inside += hitIn ? 1 : 0;
-    }
-  }
-  std::cout << what << ": " << checked << " pixels checked (" << inside
-            << " inside), max difference " << worst << std::endl;
-  if (inside == 0)
-  {
-    std::cerr << what << ": the cube is not in view" << std::endl;
-    return -1;
-  }
-  return checked;
-}
 } // namespace
 
 int TestTetReferenceRendererAnalytic(int, char*[])
@@ -272,7 +205,8 @@ int TestTetReferenceRendererAnalytic(int, char*[])
       TRC_CHECK(image);
       std::string what =
         std::string(split == trc::Split::Five ? "5 tets/voxel, " : "6 tets/voxel, ") + view.Name;
-      TRC_CHECK(CheckCube(image, camera, 33, 33, lo, hi, tau, color, what.c_str()) > 0);
+      const trc::Box box = { { lo[0], lo[1], lo[2] }, { hi[0], hi[1], hi[2] }, 1.0 };
+      TRC_CHECK(trc::CheckBoxes(image, camera, 33, 33, { box }, tau, color, what.c_str()) > 0);
       // The central ray runs through the vertex (2, 2, 2) (along the diagonal: along a chain of
       // edges of the 6-tetrahedra split).
       double rgba[4];

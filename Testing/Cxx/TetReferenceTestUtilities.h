@@ -295,6 +295,103 @@ inline int TetCount(vtkImageData* image, int i, int j)
                             ->GetComponent(i + dims[0] * static_cast<vtkIdType>(j), 0));
 }
 
+// A box [Lo, Hi] of constant attenuation that adds (Sign +1) or removes (Sign -1, a cavity
+// inside another box) chord length.
+struct Box
+{
+  double Lo[3];
+  double Hi[3];
+  double Sign;
+};
+
+// Checks an image of boxes of constant attenuation tau and colour c pixel by pixel against
+// alpha = 1 - exp(-tau chord), C = c alpha, the chord summed over the boxes with their signs,
+// along each pixel's ray from the near plane (t = 0) to t = tmax(i, j) (1, the far plane, by
+// default). Pixels whose ray passes within 1e-7 of a box's boundary (a silhouette) are left
+// out: the chord is not defined better than that there. Returns the number of pixels checked,
+// or -1 on failure (also when no checked pixel sees any box).
+inline int CheckBoxes(vtkImageData* image, vtkCamera* camera, int width, int height,
+  const std::vector<Box>& boxes, double tau, const double c[3], const char* what,
+  const std::function<double(int, int)>& tmax = nullptr, double bound = 1e-12)
+{
+  int checked = 0, inside = 0;
+  double worst = 0.0;
+  for (int j = 0; j < height; ++j)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      double nearP[3], farP[3], d[3];
+      PixelRay(camera, width, height, i, j, nearP, farP);
+      for (int k = 0; k < 3; ++k)
+      {
+        d[k] = farP[k] - nearP[k];
+      }
+      const double tEnd = tmax ? tmax(i, j) : 1.0;
+      const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      bool ambiguous = false, any = false;
+      double chord = 0.0;
+      for (const Box& box : boxes)
+      {
+        const double e = 1e-7;
+        double loIn[3], hiIn[3], loOut[3], hiOut[3];
+        for (int k = 0; k < 3; ++k)
+        {
+          loIn[k] = box.Lo[k] + e;
+          hiIn[k] = box.Hi[k] - e;
+          loOut[k] = box.Lo[k] - e;
+          hiOut[k] = box.Hi[k] + e;
+        }
+        double t0, t1, u0, u1, w0, w1;
+        const bool hit = SlabInterval(nearP, d, box.Lo, box.Hi, 0.0, tEnd, t0, t1);
+        const bool hitIn = SlabInterval(nearP, d, loIn, hiIn, 0.0, tEnd, u0, u1);
+        const bool hitOut = SlabInterval(nearP, d, loOut, hiOut, 0.0, tEnd, w0, w1);
+        ambiguous = ambiguous || hitIn != hitOut;
+        any = any || (hitIn && box.Sign > 0);
+        if (hit)
+        {
+          chord += box.Sign * (t1 - t0) * length;
+        }
+      }
+      if (ambiguous)
+      {
+        continue;
+      }
+      double rgba[4];
+      Pixel(image, i, j, rgba);
+      const double alpha = -std::expm1(-tau * chord);
+      double diff = std::fabs(rgba[3] - alpha);
+      for (int k = 0; k < 3; ++k)
+      {
+        diff = std::max(diff, std::fabs(rgba[k] - c[k] * alpha));
+      }
+      worst = std::max(worst, diff);
+      if (!(diff <= bound))
+      {
+        std::cerr << what << ": pixel (" << i << ", " << j << ") alpha " << rgba[3] << ", expected "
+                  << alpha << " (chord " << chord << "), " << TetCount(image, i, j) << " tetrahedra"
+                  << std::endl;
+        return -1;
+      }
+      if (chord > 1e-6 && TetCount(image, i, j) == 0)
+      {
+        std::cerr << what << ": pixel (" << i << ", " << j << ") crosses no tetrahedron"
+                  << std::endl;
+        return -1;
+      }
+      ++checked;
+      inside += (any && chord > 1e-6) ? 1 : 0;
+    }
+  }
+  std::cout << what << ": " << checked << " pixels checked (" << inside
+            << " see the mesh), max difference " << worst << std::endl;
+  if (inside == 0)
+  {
+    std::cerr << what << ": the mesh is not in view" << std::endl;
+    return -1;
+  }
+  return checked;
+}
+
 } // namespace trc
 
 #endif
