@@ -1322,6 +1322,71 @@ void vtkTetReferenceRenderer::ConvertToUnsignedChar(
 }
 
 //------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::EmulateRayCastImageDisplay(
+  vtkImageData* rgba, const double background[3], vtkImageData* output)
+{
+  vtkDataArray* in = rgba ? rgba->GetPointData()->GetScalars() : nullptr;
+  if (!in || in->GetNumberOfComponents() != 4 || !output)
+  {
+    vtkGenericWarningMacro("EmulateRayCastImageDisplay needs an image with 4-component scalars.");
+    return;
+  }
+  int dims[3];
+  rgba->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  // The 8-bit texture the mapper fills (it truncates).
+  std::vector<double> texel(4 * static_cast<size_t>(w) * h);
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      texel[4 * p + k] = std::min(255.0, std::max(0.0, std::floor(255.0 * in->GetComponent(p, k))));
+    }
+  }
+  // Where screen pixel i samples the texture, in texels.
+  auto locate = [](int i, int n, int& i0, int& i1, double& f)
+  {
+    const double pos = n > 1 ? (i + 0.5) * (n - 1) / n : 0.0;
+    i0 = static_cast<int>(std::floor(pos));
+    i1 = std::min(i0 + 1, n - 1);
+    f = pos - i0;
+  };
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    int j0, j1;
+    double fy;
+    locate(j, h, j0, j1, fy);
+    for (int i = 0; i < w; ++i)
+    {
+      int i0, i1;
+      double fx;
+      locate(i, w, i0, i1, fx);
+      double v[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        auto t = [&](int x, int y) { return texel[4 * (static_cast<size_t>(y) * w + x) + k]; };
+        v[k] = ((1 - fy) * ((1 - fx) * t(i0, j0) + fx * t(i1, j0)) +
+                 fy * ((1 - fx) * t(i0, j1) + fx * t(i1, j1))) /
+          255.0;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const double c = std::min(1.0, std::max(0.0, v[k] + (1.0 - v[3]) * background[k]));
+        rgb->SetTypedComponent(
+          static_cast<vtkIdType>(j) * w + i, k, static_cast<unsigned char>(std::lround(255.0 * c)));
+      }
+    }
+  }
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->GetPointData()->SetScalars(rgb);
+}
+
+//------------------------------------------------------------------------------
 int vtkTetReferenceRenderer::CompareImages(vtkImageData* a, vtkImageData* b, double stats[3])
 {
   stats[0] = stats[1] = stats[2] = 0.0;

@@ -226,6 +226,18 @@ public:
     vtkImageData* rgba, const double background[3], vtkImageData* output);
 
   /**
+   * For comparisons with vtkUnstructuredGridVolumeRayCastMapper (Bunyk): show a reference image
+   * rendered with SampleOffset (0, 0) the way VTK's ray-cast image display helper shows that
+   * mapper's image. The mapper casts its rays through pixel corners, stores floor(255 C) and
+   * floor(255 alpha) in an 8-bit texture and draws it over the viewport with texel centres 0 and
+   * W-1 on the viewport's edges, bilinearly, blended premultiplied over the background: screen
+   * pixel i shows the corner image at (i + 1/2)(W - 1)/W. @a output gets an unsigned char "RGB"
+   * array. What then remains between the two images is the integration itself.
+   */
+  static void EmulateRayCastImageDisplay(
+    vtkImageData* rgba, const double background[3], vtkImageData* output);
+
+  /**
    * Difference of two images of the same size in their first three components, in 1/255
    * units (unsigned char arrays as they are, other types times 255): @a stats gets the root
    * mean square, the 99.9th percentile and the maximum of the per-channel absolute

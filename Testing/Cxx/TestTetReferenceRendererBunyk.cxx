@@ -16,8 +16,8 @@
 // stores floor(255 C) in an 8-bit texture and draws that texture over the viewport with texel
 // centres 0 and W-1 at the viewport's edges, bilinearly: screen pixel i shows the corner image
 // at (i + 1/2)(W - 1)/W. The reference is rendered at the corners (SampleOffset 0, 0) and put
-// through the same floor, stretch and rounding here, so that what remains is the integration.
-// Both are composited over black.
+// through the same floor, stretch and rounding (EmulateRayCastImageDisplay), so that what
+// remains is the integration. Both are composited over black.
 //
 // Bounds: RMSE <= 0.75, 99.9th percentile <= 3, max <= 8 (1/255 units; measured about 0.2 to
 // 0.3, 1 and 2). A reference with wrong units (the unit distance doubled) must exceed them:
@@ -38,60 +38,6 @@
 
 #include <cstdlib>
 #include <string>
-
-namespace
-{
-// The reference as Bunyk's display helper would show it (see above), 8-bit RGB.
-void EmulateBunykDisplay(vtkImageData* corners, vtkImageData* out)
-{
-  int dims[3];
-  corners->GetDimensions(dims);
-  const int w = dims[0], h = dims[1];
-  vtkDataArray* rgba = corners->GetPointData()->GetArray("RGBA");
-  std::vector<double> texel(3 * static_cast<size_t>(w) * h);
-  for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      texel[3 * p + k] =
-        std::min(255.0, std::max(0.0, std::floor(255.0 * rgba->GetComponent(p, k))));
-    }
-  }
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
-  auto locate = [](int i, int n, int& i0, int& i1, double& f)
-  {
-    const double pos = (i + 0.5) * (n - 1) / n;
-    i0 = static_cast<int>(std::floor(pos));
-    i1 = std::min(i0 + 1, n - 1);
-    f = pos - i0;
-  };
-  for (int j = 0; j < h; ++j)
-  {
-    int j0, j1;
-    double fy;
-    locate(j, h, j0, j1, fy);
-    for (int i = 0; i < w; ++i)
-    {
-      int i0, i1;
-      double fx;
-      locate(i, w, i0, i1, fx);
-      for (int k = 0; k < 3; ++k)
-      {
-        auto t = [&](int x, int y) { return texel[3 * (static_cast<size_t>(y) * w + x) + k]; };
-        const double v = (1 - fy) * ((1 - fx) * t(i0, j0) + fx * t(i1, j0)) +
-          fy * ((1 - fx) * t(i0, j1) + fx * t(i1, j1));
-        rgb->SetTypedComponent(
-          static_cast<vtkIdType>(j) * w + i, k, static_cast<unsigned char>(std::lround(v)));
-      }
-    }
-  }
-  out->Initialize();
-  out->SetDimensions(w, h, 1);
-  out->GetPointData()->SetScalars(rgb);
-}
-} // namespace
 
 int TestTetReferenceRendererBunyk(int argc, char* argv[])
 {
@@ -189,7 +135,7 @@ int TestTetReferenceRendererBunyk(int argc, char* argv[])
     reference->SetSampleOffset(0.0, 0.0);
     TRC_CHECK(reference->Render());
     vtkNew<vtkImageData> aligned;
-    EmulateBunykDisplay(reference->GetOutput(), aligned);
+    vtkTetReferenceRenderer::EmulateRayCastImageDisplay(reference->GetOutput(), black, aligned);
     double stats[3];
     TRC_CHECK(vtkTetReferenceRenderer::CompareImages(aligned, bunyk, stats));
     std::cout << name << " (" << grid->GetNumberOfCells() << " tets, " << size << "^2): Bunyk "
@@ -205,7 +151,7 @@ int TestTetReferenceRendererBunyk(int argc, char* argv[])
     wrong->SetScalarOpacityUnitDistance(2.0 * diagonal / 15.0);
     reference->SetVolumeProperty(wrong);
     TRC_CHECK(reference->Render());
-    EmulateBunykDisplay(reference->GetOutput(), aligned);
+    vtkTetReferenceRenderer::EmulateRayCastImageDisplay(reference->GetOutput(), black, aligned);
     double broken[3];
     TRC_CHECK(vtkTetReferenceRenderer::CompareImages(aligned, bunyk, broken));
     std::cout << "  with the unit distance doubled: RMSE " << broken[0] << ", p99.9 " << broken[1]

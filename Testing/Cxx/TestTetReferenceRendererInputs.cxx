@@ -410,6 +410,31 @@ int TestTetReferenceRendererInputs(int, char*[])
     TRC_CHECK(vtkTetReferenceRenderer::CompareImages(rgb, rgb8, stats));
     TRC_CHECK(stats[0] <= 0.5 && stats[1] <= 0.5 && stats[2] <= 0.5 + 1e-4);
     TRC_CHECK(vtkTetReferenceRenderer::CompareImages(rgb8, rgb8, stats) && stats[2] == 0.0);
+
+    // The ray-cast display emulation: a uniform image stays uniform, truncated to 8 bits
+    // (colour and alpha) and blended over the background.
+    vtkNew<vtkImageData> uniform;
+    uniform->SetDimensions(7, 5, 1);
+    vtkNew<vtkDoubleArray> values;
+    values->SetNumberOfComponents(4);
+    values->SetNumberOfTuples(35);
+    for (vtkIdType p = 0; p < 35; ++p)
+    {
+      values->SetTuple4(p, 0.5, 0.25, 0.1, 0.6);
+    }
+    uniform->GetPointData()->SetScalars(values);
+    vtkNew<vtkImageData> shown;
+    vtkTetReferenceRenderer::EmulateRayCastImageDisplay(uniform, background, shown);
+    const double texel[4] = { 127, 63, 25, 153 }; // floor(255 v)
+    for (vtkIdType p = 0; p < 35; ++p)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const double expected =
+          std::round(255.0 * (texel[k] / 255.0 + (1.0 - texel[3] / 255.0) * background[k]));
+        TRC_CHECK(shown->GetPointData()->GetScalars()->GetComponent(p, k) == expected);
+      }
+    }
   }
 
   // 7. Repeated renders (threads, cached mesh) are bitwise identical.
