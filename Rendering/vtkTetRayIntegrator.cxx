@@ -23,6 +23,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -184,6 +185,16 @@ struct FunctionSet
         vtkColorTransferFunction::SafeDownCast(f->NewInstance()));
     copy->SetAllowDuplicateScalars(f->GetAllowDuplicateScalars());
     copy->DeepCopy(f);
+    // What DeepCopy may leave out, depending on the VTK version.
+    copy->SetClamping(f->GetClamping());
+    copy->SetColorSpace(f->GetColorSpace());
+    copy->SetHSVWrap(f->GetHSVWrap());
+    copy->SetScale(f->GetScale());
+    copy->SetNanColor(f->GetNanColor());
+    copy->SetBelowRangeColor(f->GetBelowRangeColor());
+    copy->SetUseBelowRangeColor(f->GetUseBelowRangeColor());
+    copy->SetAboveRangeColor(f->GetAboveRangeColor());
+    copy->SetUseAboveRangeColor(f->GetUseAboveRangeColor());
     return copy;
   }
 
@@ -632,6 +643,23 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
       return (rgb[0] == 0.0 ? 1 : 0) | (rgb[1] == 0.0 ? 2 : 0) | (rgb[2] == 0.0 ? 4 : 0) |
         (std::max(rgb[0], std::max(rgb[1], rgb[2])) == 1.0 ? 8 : 0);
     };
+    // Every change of state between l and r (states sl and sr), down to adjacent doubles.
+    std::function<void(double, int, double, int)> bisect = [&](double l, int sl, double r, int sr)
+    {
+      if (sl == sr)
+      {
+        return;
+      }
+      const double m = 0.5 * (l + r);
+      if (!(m > l && m < r))
+      {
+        breaks.push_back(r);
+        return;
+      }
+      const int sm = sextant(m);
+      bisect(l, sl, m, sm);
+      bisect(m, sm, r, sr);
+    };
     const std::vector<double> pieces(breaks);
     for (size_t i = 0; i + 1 < pieces.size(); ++i)
     {
@@ -640,27 +668,16 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
       {
         continue; // constant outside the node range
       }
+      // The ends are sampled too: the colour is continuous at nodes, and a bend may lie
+      // anywhere in the piece, right next to a node included.
       constexpr int samples = 256;
-      double xa = lo + (hi - lo) / (2 * samples);
+      double xa = lo;
       int ka = sextant(xa);
-      for (int k = 1; k < samples; ++k)
+      for (int k = 1; k <= samples; ++k)
       {
-        const double xb = lo + (hi - lo) * (k + 0.5) / samples;
+        const double xb = k == samples ? hi : lo + (hi - lo) * k / samples;
         const int kb = sextant(xb);
-        if (kb != ka)
-        {
-          double l = xa, r = xb;
-          for (int iter = 0; iter < 200; ++iter)
-          {
-            const double m = 0.5 * (l + r);
-            if (!(m > l && m < r))
-            {
-              break;
-            }
-            (sextant(m) == ka ? l : r) = m;
-          }
-          breaks.push_back(r);
-        }
+        bisect(xa, ka, xb, kb);
         xa = xb;
         ka = kb;
       }
@@ -670,8 +687,13 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
   }
   in.Breaks = breaks;
 
-  // Per-thread copies must evaluate exactly like the snapshot; check it on sample points
-  // (VTK versions differ in what DeepCopy carries over).
+  // The snapshot and the per-thread copies must evaluate exactly like the property's own
+  // functions; check it on sample points (VTK versions differ in what DeepCopy carries over).
+  FunctionSet original;
+  original.Opacity = opacity;
+  original.Color = color;
+  original.Gray = gray;
+  original.InverseUnitDistance = in.Snapshot.InverseUnitDistance;
   FunctionSet check;
   check.CopyFrom(in.Snapshot);
   std::vector<double> samples(breaks);
@@ -687,10 +709,12 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
   }
   for (double s : samples)
   {
-    double t0, t1, c0[3], c1[3];
-    in.Snapshot.Evaluate(s, t0, c0);
-    check.Evaluate(s, t1, c1);
-    if (t0 != t1 || c0[0] != c1[0] || c0[1] != c1[1] || c0[2] != c1[2])
+    double t0, t1, t2, c0[3], c1[3], c2[3];
+    original.Evaluate(s, t0, c0);
+    in.Snapshot.Evaluate(s, t1, c1);
+    check.Evaluate(s, t2, c2);
+    if (t0 != t1 || c0[0] != c1[0] || c0[1] != c1[1] || c0[2] != c1[2] || t0 != t2 ||
+      c0[0] != c2[0] || c0[1] != c2[1] || c0[2] != c2[2])
     {
       vtkErrorMacro("A copy of the transfer functions does not evaluate like the original (at "
         << s << "); cannot integrate thread-safely.");
