@@ -398,6 +398,31 @@ int TestTetRayIntegrator(int, char*[])
     }
   }
 
+  // 7b. HSV: every hue bend is a node, so between two consecutive nodes the hue of VTK's
+  //     colours stays within one sixth of the circle (a bend right next to a node was once
+  //     missed: 7e-9 of error there).
+  {
+    vtkNew<vtkTetRayIntegrator> integrator;
+    TRC_CHECK(integrator->Initialize(manyNodesHSV));
+    vtkColorTransferFunction* c = manyNodesHSV->GetRGBTransferFunction(0);
+    const int n = integrator->GetNumberOfNodes();
+    TRC_CHECK(n > 55); // the 55 nodes plus bends
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const double lo = integrator->GetNode(i), hi = integrator->GetNode(i + 1);
+      int first = -1;
+      for (int k = 1; k < 200; ++k)
+      {
+        double rgb[3], hsv[3];
+        c->GetColor(lo + (hi - lo) * k / 200.0, rgb);
+        vtkMath::RGBToHSV(rgb, hsv);
+        const int sextant = std::min(5, static_cast<int>(6.0 * hsv[0]));
+        first = first < 0 ? sextant : first;
+        TRC_CHECK(sextant == first);
+      }
+    }
+  }
+
   // 8. Non-finite or empty segments contribute nothing; bad properties are refused.
   {
     vtkNew<vtkTetRayIntegrator> integrator;
