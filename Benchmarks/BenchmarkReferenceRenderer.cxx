@@ -12,13 +12,16 @@
 // --bunyk compares it with VTK's vtkUnstructuredGridVolumeRayCastMapper (Bunyk, partial
 // pre-integration) rendered in a VTK window (needs X: run under xvfb-run).
 //
-//   BenchmarkReferenceRenderer [--size N] [--repeat R] [--bunyk] <Meshes dir> [file.vtu ...]
+//   BenchmarkReferenceRenderer [--size N] [--repeat R] [--tf KIND] [--bunyk] <Meshes dir>
+//                              [file.vtu ...]
 //
 // Defaults: 256 x 256, best of 3 renders, the datasets spx_vistrails, bluntfin_tets,
 // post_tets6_conforming and comb6teeth_tetgen_270k. The scene: a three-node colour ramp and an
 // opacity ramp (0.05 to 0.9) over the scalar range, unit distance = diagonal / 15, the camera
 // VTK's ResetCamera() gives (view angle 30), then Azimuth(30), Elevation(20), Zoom(1.3).
-// Prints one line per dataset (threads = vtkSMPTools threads).
+// --tf chooses the colour interpolation: rgb (default; linear between nodes, closed form), hsv,
+// lab, diverging, or sharpness (RGB with midpoint 0.3 and sharpness 0.5 on every node: Hermite
+// curves). Prints one line per dataset (threads = vtkSMPTools threads).
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -51,6 +54,7 @@ int main(int argc, char* argv[])
 {
   int size = 256, repeat = 3;
   bool bunyk = false;
+  std::string tf = "rgb";
   std::vector<std::string> args;
   for (int i = 1; i < argc; ++i)
   {
@@ -61,6 +65,10 @@ int main(int argc, char* argv[])
     else if (!strcmp(argv[i], "--repeat") && i + 1 < argc)
     {
       repeat = std::max(1, atoi(argv[++i]));
+    }
+    else if (!strcmp(argv[i], "--tf") && i + 1 < argc)
+    {
+      tf = argv[++i];
     }
     else if (!strcmp(argv[i], "--bunyk"))
     {
@@ -90,8 +98,13 @@ int main(int argc, char* argv[])
       "comb6teeth_tetgen_270k.vtu" };
   }
 
-  printf("# vtkTetReferenceRenderer, %d x %d, best of %d, %d threads (%s)\n", size, size, repeat,
-    vtkSMPTools::GetEstimatedNumberOfThreads(), vtkSMPTools::GetBackend());
+  if (tf != "rgb" && tf != "hsv" && tf != "lab" && tf != "diverging" && tf != "sharpness")
+  {
+    fprintf(stderr, "unknown --tf %s\n", tf.c_str());
+    return 1;
+  }
+  printf("# vtkTetReferenceRenderer, %d x %d, best of %d, %d threads (%s), colour %s\n", size, size,
+    repeat, vtkSMPTools::GetEstimatedNumberOfThreads(), vtkSMPTools::GetBackend(), tf.c_str());
   printf("%-28s %9s %9s %8s %8s %9s %8s %6s", "dataset", "tets", "prepare_s", "first_s", "best_s",
     "tets/ray", "max", "cover");
   if (bunyk)
@@ -118,12 +131,25 @@ int main(int argc, char* argv[])
       (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
       (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
 
+    const double mid = tf == "sharpness" ? 0.3 : 0.5, sharp = tf == "sharpness" ? 0.5 : 0.0;
     vtkNew<vtkColorTransferFunction> color;
-    color->AddRGBPoint(range[0], 0.1, 0.2, 1.0);
-    color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.2, 1.0, 0.3);
-    color->AddRGBPoint(range[1], 1.0, 0.3, 0.1);
+    color->AddRGBPoint(range[0], 0.1, 0.2, 1.0, mid, sharp);
+    color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.2, 1.0, 0.3, mid, sharp);
+    color->AddRGBPoint(range[1], 1.0, 0.3, 0.1, mid, sharp);
+    if (tf == "hsv")
+    {
+      color->SetColorSpaceToHSV();
+    }
+    else if (tf == "lab")
+    {
+      color->SetColorSpaceToLab();
+    }
+    else if (tf == "diverging")
+    {
+      color->SetColorSpaceToDiverging();
+    }
     vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(range[0], 0.05);
+    opacity->AddPoint(range[0], 0.05, mid, sharp);
     opacity->AddPoint(range[1], 0.9);
     vtkNew<vtkVolumeProperty> property;
     property->SetColor(color);
