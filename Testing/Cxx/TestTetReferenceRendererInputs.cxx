@@ -28,6 +28,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <limits>
+#include <sstream>
 
 namespace
 {
@@ -437,11 +438,15 @@ int TestTetReferenceRendererInputs(int, char*[])
     }
   }
 
-  // 7. Repeated renders (threads, cached mesh) are bitwise identical.
+  // 7. Repeated renders (threads, cached mesh) are bitwise identical; the state prints.
   {
     TRC_CHECK(good->Render());
     TRC_CHECK(good->GetLastPreparationTime() == 0.0); // cached
     TRC_CHECK(Difference(good->GetOutput(), reference) == 0.0);
+    std::ostringstream printed;
+    good->Print(printed);
+    TRC_CHECK(printed.str().find("NumberOfTetrahedra: 40") != std::string::npos);
+    TRC_CHECK(printed.str().find("NumberOfNodes: 2") != std::string::npos); // the integrator
   }
 
   std::cout << "TestTetReferenceRendererInputs passed" << std::endl;
