@@ -12,6 +12,7 @@
 
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkSMPThreadLocal.h"
@@ -22,6 +23,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -30,9 +32,9 @@ namespace
 {
 // Beyond this optical depth the transmittance (< 4.3e-18) no longer changes a double result.
 constexpr double CutOffDepth = 40.0;
-// Closed form: 12-point Gauss-Legendre on panels of optical depth <= 2 (relative error of the
-// colour weights < 1e-14, see the class documentation).
-constexpr int ClosedOrder = 12;
+// Closed form: Gauss-Legendre on panels of optical depth <= 2, with as many nodes as the
+// panel's depth needs for a relative error of the colour weights below 5e-15 (measured against
+// 80-bit quadrature; see the class documentation): most segments of a mesh are thin.
 constexpr double ClosedPanelDepth = 2.0;
 // Adaptive integration of non-linear pieces.
 constexpr int AdaptiveOrder = 16;
@@ -79,12 +81,30 @@ struct GaussLegendreRule
 // The 16-point rule plus its integration matrix S[k][j] = Int_{-1}^{x_k} l_j(x) dx (l_j the
 // Lagrange basis on the nodes): applied to samples of tau, it gives the optical depth from the
 // panel start to each node, exact for polynomials of degree < 16.
+// Tail[q][k] gives the Legendre coefficient of degree 14 + q of a function sampled at the
+// nodes: the size of the two last coefficients tells whether the samples resolve the function.
 struct SpectralRule
 {
   GaussLegendreRule<AdaptiveOrder> G;
   double S[AdaptiveOrder][AdaptiveOrder];
+  double Tail[2][AdaptiveOrder];
   SpectralRule()
   {
+    for (int k = 0; k < AdaptiveOrder; ++k)
+    {
+      long double p0 = 1.0L, p1 = G.X[k];
+      for (int n = 2; n <= AdaptiveOrder - 1; ++n)
+      {
+        const long double p2 = ((2 * n - 1) * G.X[k] * p1 - (n - 1) * p0) / n;
+        p0 = p1;
+        p1 = p2;
+        if (n >= AdaptiveOrder - 2)
+        {
+          this->Tail[n - (AdaptiveOrder - 2)][k] =
+            static_cast<double>((2 * n + 1) / 2.0L * G.W[k] * p1);
+        }
+      }
+    }
     for (int k = 0; k < AdaptiveOrder; ++k)
     {
       const long double a = -1.0L, b = G.X[k];
@@ -111,10 +131,21 @@ struct SpectralRule
   }
 };
 
-const GaussLegendreRule<ClosedOrder>& ClosedRule()
+// Rules of 4, 5, 6, 8, 10 and 12 nodes, and the largest panel depth each one serves.
+struct ClosedRules
 {
-  static const GaussLegendreRule<ClosedOrder> rule;
-  return rule;
+  GaussLegendreRule<4> R4;
+  GaussLegendreRule<5> R5;
+  GaussLegendreRule<6> R6;
+  GaussLegendreRule<8> R8;
+  GaussLegendreRule<10> R10;
+  GaussLegendreRule<12> R12;
+};
+
+const ClosedRules& ClosedRule()
+{
+  static const ClosedRules rules;
+  return rules;
 }
 
 const SpectralRule& AdaptiveRule()
@@ -165,6 +196,16 @@ struct FunctionSet
         vtkColorTransferFunction::SafeDownCast(f->NewInstance()));
     copy->SetAllowDuplicateScalars(f->GetAllowDuplicateScalars());
     copy->DeepCopy(f);
+    // What DeepCopy may leave out, depending on the VTK version.
+    copy->SetClamping(f->GetClamping());
+    copy->SetColorSpace(f->GetColorSpace());
+    copy->SetHSVWrap(f->GetHSVWrap());
+    copy->SetScale(f->GetScale());
+    copy->SetNanColor(f->GetNanColor());
+    copy->SetBelowRangeColor(f->GetBelowRangeColor());
+    copy->SetUseBelowRangeColor(f->GetUseBelowRangeColor());
+    copy->SetAboveRangeColor(f->GetAboveRangeColor());
+    copy->SetUseAboveRangeColor(f->GetUseAboveRangeColor());
     return copy;
   }
 
@@ -213,6 +254,9 @@ struct PieceResult
 {
   double Depth = 0.0;
   double C[3] = { 0.0, 0.0, 0.0 };
+  // Adaptive panels: an estimate of the integration error from how well the samples resolve
+  // the attenuation and the emitted light (see vtkInternals::Panel).
+  double Unresolved = 0.0;
 };
 
 // A piece followed by another: depths add, the second one is seen through the first.
@@ -244,7 +288,7 @@ PieceResult IntegrateLinearPiece(
   {
     return r;
   }
-  const GaussLegendreRule<ClosedOrder>& rule = ClosedRule();
+  const ClosedRules& rules = ClosedRule();
   const bool truncated = depth > CutOffDepth;
   const double usedDepth = truncated ? CutOffDepth : depth;
   const int panels = std::max(1, static_cast<int>(std::ceil(usedDepth / ClosedPanelDepth)));
@@ -267,14 +311,42 @@ PieceResult IntegrateLinearPiece(
       ub = std::min(1.0, 2.0 * y / (a0 + std::sqrt(disc)));
     }
     const double h = 0.5 * (ub - ua), m = 0.5 * (ub + ua);
-    for (int i = 0; i < ClosedOrder; ++i)
+    auto accumulate = [&](const auto& rule)
     {
-      const double u = m + h * rule.X[i];
-      const double ru = a0 + slope * u;
-      const double lambda = 0.5 * u * (a0 + ru);
-      const double rest = 0.5 * (1.0 - u) * (ru + a1);
-      w0 += h * rule.W[i] * -std::expm1(-lambda);
-      w1 += h * rule.W[i] * std::exp(-lambda) * -std::expm1(-rest);
+      const int n = static_cast<int>(sizeof(rule.X) / sizeof(rule.X[0]));
+      for (int i = 0; i < n; ++i)
+      {
+        const double u = m + h * rule.X[i];
+        const double ru = a0 + slope * u;
+        const double lambda = 0.5 * u * (a0 + ru);
+        const double rest = 0.5 * (1.0 - u) * (ru + a1);
+        w0 += h * rule.W[i] * -std::expm1(-lambda);
+        w1 += h * rule.W[i] * std::exp(-lambda) * -std::expm1(-rest);
+      }
+    };
+    if (panelDepth <= 1e-3)
+    {
+      accumulate(rules.R4);
+    }
+    else if (panelDepth <= 0.02)
+    {
+      accumulate(rules.R5);
+    }
+    else if (panelDepth <= 0.1)
+    {
+      accumulate(rules.R6);
+    }
+    else if (panelDepth <= 0.3)
+    {
+      accumulate(rules.R8);
+    }
+    else if (panelDepth <= 1.0)
+    {
+      accumulate(rules.R10);
+    }
+    else
+    {
+      accumulate(rules.R12);
     }
     ua = ub;
   }
@@ -366,6 +438,7 @@ public:
     }
     PieceResult r;
     double depth = 0.0;
+    double emission[3][AdaptiveOrder];
     for (int k = 0; k < AdaptiveOrder; ++k)
     {
       depth += rule.G.W[k] * tau[k];
@@ -374,13 +447,35 @@ public:
       {
         local += rule.S[k][j] * tau[j];
       }
-      const double weight = h * rule.G.W[k] * tau[k] * std::exp(-h * local);
+      const double e = tau[k] * std::exp(-h * local);
       for (int i = 0; i < 3; ++i)
       {
-        r.C[i] += weight * c[k][i];
+        emission[i][k] = e * c[k][i];
+        r.C[i] += h * rule.G.W[k] * emission[i][k];
       }
     }
     r.Depth = h * depth;
+    // Comparing a panel with its halves alone can miss a kink (hue bends of HSV, the
+    // piecewise formulas of Lab): the quadrature error oscillates with the kink's position.
+    // The last Legendre coefficients of the sampled functions do not: for a smooth function
+    // they are far below the integration error bound 2h(|a14| + |a15|), for a kink they stay
+    // large until the panel holding it is small.
+    auto tail = [&rule](const double* v)
+    {
+      double a14 = 0.0, a15 = 0.0;
+      for (int k = 0; k < AdaptiveOrder; ++k)
+      {
+        a14 += rule.Tail[0][k] * v[k];
+        a15 += rule.Tail[1][k] * v[k];
+      }
+      return std::fabs(a14) + std::fabs(a15);
+    };
+    double unresolved = tail(tau);
+    for (int i = 0; i < 3; ++i)
+    {
+      unresolved = std::max(unresolved, tail(emission[i]));
+    }
+    r.Unresolved = 2.0 * h * unresolved;
     return r;
   }
 
@@ -396,9 +491,13 @@ public:
     {
       err = std::max(err, std::fabs(fine.C[i] - coarse.C[i]));
     }
-    err *= transmittance;
+    err = transmittance * std::max(err, left.Unresolved + right.Unresolved);
+    // Each panel may use the share of the tolerance its length deserves, and at least 1/64 of
+    // it: around a jump the error shrinks only like the panel, so a share proportional to the
+    // length would never be met there.
+    const double allowed = tolerance * std::max((b - a) / len, 1.0 / 64.0);
     const bool resolved = coarse.Depth <= AdaptivePanelDepth;
-    if ((resolved && err <= tolerance * (b - a) / len) || transmittance < 1e-17)
+    if ((resolved && err <= allowed) || transmittance < 1e-17)
     {
       return fine;
     }
@@ -475,6 +574,13 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
     vtkErrorMacro("The volume property has no usable transfer functions.");
     return 0;
   }
+  if (color && color->GetColorSpace() == VTK_CTF_LAB_CIEDE2000)
+  {
+    // VTK 9.1 searches a path through Lab space at every evaluation (about 35 ms each), which
+    // makes an exact integral impractical.
+    vtkErrorMacro("The LAB_CIEDE2000 colour space is not supported by the reference integrator.");
+    return 0;
+  }
   in.Snapshot.Opacity = FunctionSet::Clone(opacity);
   in.Snapshot.Color = color ? FunctionSet::Clone(color) : nullptr;
   in.Snapshot.Gray = gray ? FunctionSet::Clone(gray) : nullptr;
@@ -528,8 +634,14 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
       mids[i] = v[4];
       sharp[i] = v[5];
     }
+    // Diverging interpolation may pass through white half way between two nodes: a kink.
+    const bool diverging = f->GetColorSpace() == VTK_CTF_DIVERGING;
     for (int i = 0; i + 1 < n; ++i)
     {
+      if (diverging && colorLayout.X[i + 1] > colorLayout.X[i])
+      {
+        breaks.push_back(NodeMidpoint(colorLayout.X[i], colorLayout.X[i + 1], 0.5));
+      }
       const bool linear = linearSpace && mids[i] == 0.5 && sharp[i] < 0.01;
       colorLayout.LinearPiece.push_back(linear ? 1 : 0);
       if (!(mids[i] == 0.5 && sharp[i] < 0.01) && colorLayout.X[i + 1] > colorLayout.X[i])
@@ -544,10 +656,83 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
     breaks.end());
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+
+  // HSV interpolation bends the RGB components wherever the hue crosses a multiple of 1/6.
+  // Adaptive quadrature can misjudge its error at such kinks, so they become breakpoints too:
+  // found where the sextant of the hue of VTK's colours changes, between dense samples, then
+  // by bisection to the last bit. A missed or misplaced bend only costs adaptive work.
+  // Lab and diverging interpolation go through XYZ, and VTK clips the resulting RGB (a channel
+  // below 0 becomes 0, a colour above 1 is scaled down): kinks wherever that clipping starts
+  // or stops, found the same way from the clipping state of VTK's colours.
+  const int space = in.Snapshot.Color ? in.Snapshot.Color->GetColorSpace() : VTK_CTF_RGB;
+  if (space == VTK_CTF_HSV || space == VTK_CTF_LAB || space == VTK_CTF_DIVERGING)
+  {
+    vtkColorTransferFunction* f = in.Snapshot.Color;
+    const bool hsvSpace = space == VTK_CTF_HSV;
+    auto sextant = [f, hsvSpace](double x)
+    {
+      double rgb[3];
+      f->GetColor(x, rgb);
+      if (hsvSpace)
+      {
+        double hsv[3];
+        vtkMath::RGBToHSV(rgb, hsv);
+        return std::min(5, static_cast<int>(6.0 * hsv[0]));
+      }
+      return (rgb[0] == 0.0 ? 1 : 0) | (rgb[1] == 0.0 ? 2 : 0) | (rgb[2] == 0.0 ? 4 : 0) |
+        (std::max(rgb[0], std::max(rgb[1], rgb[2])) == 1.0 ? 8 : 0);
+    };
+    // Every change of state between l and r (states sl and sr), down to adjacent doubles.
+    std::function<void(double, int, double, int)> bisect = [&](double l, int sl, double r, int sr)
+    {
+      if (sl == sr)
+      {
+        return;
+      }
+      const double m = 0.5 * (l + r);
+      if (!(m > l && m < r))
+      {
+        breaks.push_back(r);
+        return;
+      }
+      const int sm = sextant(m);
+      bisect(l, sl, m, sm);
+      bisect(m, sm, r, sr);
+    };
+    const std::vector<double> pieces(breaks);
+    for (size_t i = 0; i + 1 < pieces.size(); ++i)
+    {
+      const double lo = pieces[i], hi = pieces[i + 1];
+      if (lo < colorLayout.X.front() || hi > colorLayout.X.back())
+      {
+        continue; // constant outside the node range
+      }
+      // The ends are sampled too: the colour is continuous at nodes, and a bend may lie
+      // anywhere in the piece, right next to a node included.
+      constexpr int samples = 256;
+      double xa = lo;
+      int ka = sextant(xa);
+      for (int k = 1; k <= samples; ++k)
+      {
+        const double xb = k == samples ? hi : lo + (hi - lo) * k / samples;
+        const int kb = sextant(xb);
+        bisect(xa, ka, xb, kb);
+        xa = xb;
+        ka = kb;
+      }
+    }
+    std::sort(breaks.begin(), breaks.end());
+    breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  }
   in.Breaks = breaks;
 
-  // Per-thread copies must evaluate exactly like the snapshot; check it on sample points
-  // (VTK versions differ in what DeepCopy carries over).
+  // The snapshot and the per-thread copies must evaluate exactly like the property's own
+  // functions; check it on sample points (VTK versions differ in what DeepCopy carries over).
+  FunctionSet original;
+  original.Opacity = opacity;
+  original.Color = color;
+  original.Gray = gray;
+  original.InverseUnitDistance = in.Snapshot.InverseUnitDistance;
   FunctionSet check;
   check.CopyFrom(in.Snapshot);
   std::vector<double> samples(breaks);
@@ -563,10 +748,12 @@ int vtkTetRayIntegrator::Initialize(vtkVolumeProperty* property)
   }
   for (double s : samples)
   {
-    double t0, t1, c0[3], c1[3];
-    in.Snapshot.Evaluate(s, t0, c0);
-    check.Evaluate(s, t1, c1);
-    if (t0 != t1 || c0[0] != c1[0] || c0[1] != c1[1] || c0[2] != c1[2])
+    double t0, t1, t2, c0[3], c1[3], c2[3];
+    original.Evaluate(s, t0, c0);
+    in.Snapshot.Evaluate(s, t1, c1);
+    check.Evaluate(s, t2, c2);
+    if (t0 != t1 || c0[0] != c1[0] || c0[1] != c1[1] || c0[2] != c1[2] || t0 != t2 ||
+      c0[0] != c2[0] || c0[1] != c2[1] || c0[2] != c2[2])
     {
       vtkErrorMacro("A copy of the transfer functions does not evaluate like the original (at "
         << s << "); cannot integrate thread-safely.");

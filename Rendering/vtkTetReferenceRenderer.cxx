@@ -868,6 +868,7 @@ vtkTetReferenceRenderer::vtkTetReferenceRenderer()
   , VolumeMatrix(vtkMatrix4x4::New())
   , Volume(nullptr)
   , OpaqueDepth(nullptr)
+  , DoublePrecisionOutput(0)
   , Output(vtkImageData::New())
   , Integrator(vtkTetRayIntegrator::New())
   , NumberOfTetrahedra(0)
@@ -1136,14 +1137,25 @@ int vtkTetReferenceRenderer::Render()
     }
   };
 
-  vtkNew<vtkFloatArray> rgba;
+  vtkSmartPointer<vtkDataArray> rgba;
+  if (this->DoublePrecisionOutput)
+  {
+    rgba = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    rgba = vtkSmartPointer<vtkFloatArray>::New();
+  }
   rgba->SetName("RGBA");
   rgba->SetNumberOfComponents(4);
   rgba->SetNumberOfTuples(numPixels);
   vtkNew<vtkIntArray> counts;
   counts->SetName("NumberOfTets");
   counts->SetNumberOfTuples(numPixels);
-  float* rgbaOut = rgba->GetPointer(0);
+  float* rgbaFloat =
+    this->DoublePrecisionOutput ? nullptr : vtkFloatArray::SafeDownCast(rgba)->GetPointer(0);
+  double* rgbaDouble =
+    this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr;
   int* countOut = counts->GetPointer(0);
   const double offsetX = this->SampleOffset[0], offsetY = this->SampleOffset[1];
   vtkTetRayIntegrator* integrator = this->Integrator;
@@ -1157,8 +1169,23 @@ int vtkTetReferenceRenderer::Render()
         for (int i = 0; i < width; ++i)
         {
           const vtkIdType pixel = j * width + i;
-          float* out = rgbaOut + 4 * pixel;
-          out[0] = out[1] = out[2] = out[3] = 0.0f;
+          // Zero until a result is stored (rays that meet nothing leave early).
+          auto store = [&](const double v[4])
+          {
+            for (int k = 0; k < 4; ++k)
+            {
+              if (rgbaFloat)
+              {
+                rgbaFloat[4 * pixel + k] = static_cast<float>(v[k]);
+              }
+              else
+              {
+                rgbaDouble[4 * pixel + k] = v[k];
+              }
+            }
+          };
+          const double zero[4] = { 0.0, 0.0, 0.0, 0.0 };
+          store(zero);
           countOut[pixel] = 0;
           const double x = 2.0 * (i + offsetX) / width - 1.0;
           const double y = 2.0 * (j + offsetY) / height - 1.0;
@@ -1221,10 +1248,8 @@ int vtkTetReferenceRenderer::Render()
               break;
             }
           }
-          out[0] = static_cast<float>(color[0]);
-          out[1] = static_cast<float>(color[1]);
-          out[2] = static_cast<float>(color[2]);
-          out[3] = static_cast<float>(-std::expm1(-opticalDepth));
+          const double result[4] = { color[0], color[1], color[2], -std::expm1(-opticalDepth) };
+          store(result);
         }
       }
     });
@@ -1297,6 +1322,71 @@ void vtkTetReferenceRenderer::ConvertToUnsignedChar(
 }
 
 //------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::EmulateRayCastImageDisplay(
+  vtkImageData* rgba, const double background[3], vtkImageData* output)
+{
+  vtkDataArray* in = rgba ? rgba->GetPointData()->GetScalars() : nullptr;
+  if (!in || in->GetNumberOfComponents() != 4 || !output)
+  {
+    vtkGenericWarningMacro("EmulateRayCastImageDisplay needs an image with 4-component scalars.");
+    return;
+  }
+  int dims[3];
+  rgba->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  // The 8-bit texture the mapper fills (it truncates).
+  std::vector<double> texel(4 * static_cast<size_t>(w) * h);
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(w) * h; ++p)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      texel[4 * p + k] = std::min(255.0, std::max(0.0, std::floor(255.0 * in->GetComponent(p, k))));
+    }
+  }
+  // Where screen pixel i samples the texture, in texels.
+  auto locate = [](int i, int n, int& i0, int& i1, double& f)
+  {
+    const double pos = n > 1 ? (i + 0.5) * (n - 1) / n : 0.0;
+    i0 = static_cast<int>(std::floor(pos));
+    i1 = std::min(i0 + 1, n - 1);
+    f = pos - i0;
+  };
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(static_cast<vtkIdType>(w) * h);
+  for (int j = 0; j < h; ++j)
+  {
+    int j0, j1;
+    double fy;
+    locate(j, h, j0, j1, fy);
+    for (int i = 0; i < w; ++i)
+    {
+      int i0, i1;
+      double fx;
+      locate(i, w, i0, i1, fx);
+      double v[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        auto t = [&](int x, int y) { return texel[4 * (static_cast<size_t>(y) * w + x) + k]; };
+        v[k] = ((1 - fy) * ((1 - fx) * t(i0, j0) + fx * t(i1, j0)) +
+                 fy * ((1 - fx) * t(i0, j1) + fx * t(i1, j1))) /
+          255.0;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const double c = std::min(1.0, std::max(0.0, v[k] + (1.0 - v[3]) * background[k]));
+        rgb->SetTypedComponent(
+          static_cast<vtkIdType>(j) * w + i, k, static_cast<unsigned char>(std::lround(255.0 * c)));
+      }
+    }
+  }
+  output->Initialize();
+  output->SetDimensions(w, h, 1);
+  output->GetPointData()->SetScalars(rgb);
+}
+
+//------------------------------------------------------------------------------
 int vtkTetReferenceRenderer::CompareImages(vtkImageData* a, vtkImageData* b, double stats[3])
 {
   stats[0] = stats[1] = stats[2] = 0.0;
@@ -1353,6 +1443,7 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
   os << indent << "SampleOffset: " << this->SampleOffset[0] << ", " << this->SampleOffset[1]
      << "\n";
+  os << indent << "DoublePrecisionOutput: " << this->DoublePrecisionOutput << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "LastPreparationTime: " << this->LastPreparationTime << "\n";

@@ -42,11 +42,11 @@
  * buffer (window z in [0, 1] per pixel, 1 meaning no geometry).
  *
  * The output is a vtkImageData of width x height pixels (row 0 at the bottom) with a float
- * "RGBA" point array holding premultiplied colour and opacity, and an int "NumberOfTets" array
- * counting the tetrahedra crossed by each ray over a positive length (transparent ones
- * included). CompositeOverBackground() and ConvertToUnsignedChar() turn it into the image a
- * window would show over a background colour; CompareImages() measures the difference of two
- * RGB images in 1/255 units.
+ * "RGBA" point array (double on request) holding premultiplied colour and opacity, and an int
+ * "NumberOfTets" array counting the tetrahedra crossed by each ray over a positive length
+ * (transparent ones included). CompositeOverBackground() and ConvertToUnsignedChar() turn it into
+ * the image a window would show over a background colour; CompareImages() measures the difference
+ * of two RGB images in 1/255 units.
  *
  * Rays run in parallel with vtkSMPTools; the mesh preparation (triangulation, orientation,
  * hierarchy) is cached until the input, the scalar selection or the volume matrix changes.
@@ -173,6 +173,16 @@ public:
   vtkGetVector2Macro(SampleOffset, double);
   ///@}
 
+  ///@{
+  /**
+   * Store "RGBA" as doubles instead of floats (default off). The integration is done in double
+   * precision either way; tests that assert bounds tighter than float rounding (6e-8) use this.
+   */
+  vtkSetMacro(DoublePrecisionOutput, vtkTypeBool);
+  vtkGetMacro(DoublePrecisionOutput, vtkTypeBool);
+  vtkBooleanMacro(DoublePrecisionOutput, vtkTypeBool);
+  ///@}
+
   /**
    * Render. Returns 1 on success; 0 with an error message on bad input (no input, no
    * tetrahedra, no scalars, no property, no camera, a bad image size or depth buffer). On
@@ -216,6 +226,18 @@ public:
     vtkImageData* rgba, const double background[3], vtkImageData* output);
 
   /**
+   * For comparisons with vtkUnstructuredGridVolumeRayCastMapper (Bunyk): show a reference image
+   * rendered with SampleOffset (0, 0) the way VTK's ray-cast image display helper shows that
+   * mapper's image. The mapper casts its rays through pixel corners, stores floor(255 C) and
+   * floor(255 alpha) in an 8-bit texture and draws it over the viewport with texel centres 0 and
+   * W-1 on the viewport's edges, bilinearly, blended premultiplied over the background: screen
+   * pixel i shows the corner image at (i + 1/2)(W - 1)/W. @a output gets an unsigned char "RGB"
+   * array. What then remains between the two images is the integration itself.
+   */
+  static void EmulateRayCastImageDisplay(
+    vtkImageData* rgba, const double background[3], vtkImageData* output);
+
+  /**
    * Difference of two images of the same size in their first three components, in 1/255
    * units (unsigned char arrays as they are, other types times 255): @a stats gets the root
    * mean square, the 99.9th percentile and the maximum of the per-channel absolute
@@ -241,6 +263,7 @@ protected:
   vtkVolume* Volume;
   vtkFloatArray* OpaqueDepth;
   double SampleOffset[2];
+  vtkTypeBool DoublePrecisionOutput;
   vtkImageData* Output;
   vtkTetRayIntegrator* Integrator;
 
