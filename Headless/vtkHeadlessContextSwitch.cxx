@@ -1,0 +1,82 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkHeadlessContextSwitch.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkHeadlessContextSwitch.h"
+
+// The EGL side never needs X types.
+#define EGL_NO_X11
+#include <EGL/egl.h>
+
+#if TILEDRAYCAST_HEADLESS_HAS_X
+#include <GL/glx.h>
+#endif
+
+namespace vtkHeadlessContextSwitch
+{
+
+bool HasGLX()
+{
+#if TILEDRAYCAST_HEADLESS_HAS_X
+  return true;
+#else
+  return false;
+#endif
+}
+
+GLXBinding ReleaseGLX()
+{
+  GLXBinding binding;
+#if TILEDRAYCAST_HEADLESS_HAS_X
+  GLXContext context = glXGetCurrentContext();
+  if (context)
+  {
+    Display* display = glXGetCurrentDisplay();
+    binding.Display = display;
+    binding.DrawDrawable = glXGetCurrentDrawable();
+    binding.ReadDrawable = glXGetCurrentReadDrawable();
+    binding.Context = context;
+    if (display)
+    {
+      glXMakeContextCurrent(display, None, None, nullptr);
+    }
+  }
+#endif
+  return binding;
+}
+
+void RestoreGLX(const GLXBinding& binding)
+{
+#if TILEDRAYCAST_HEADLESS_HAS_X
+  if (binding.Context && binding.Display)
+  {
+    // The caller has released its EGL context first: glvnd refuses GLX otherwise.
+    glXMakeContextCurrent(static_cast<Display*>(binding.Display), binding.DrawDrawable,
+      binding.ReadDrawable, static_cast<GLXContext>(binding.Context));
+  }
+#else
+  (void)binding;
+#endif
+}
+
+void ReleaseEGL()
+{
+  // eglGetCurrentContext() answers for the API bound on this thread; VTK's contexts are
+  // desktop OpenGL ones.
+  if (eglQueryAPI() != EGL_OPENGL_API)
+  {
+    eglBindAPI(EGL_OPENGL_API);
+  }
+  if (eglGetCurrentContext() != EGL_NO_CONTEXT)
+  {
+    eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  }
+}
+
+}
