@@ -67,12 +67,9 @@ void RestoreGLX(const GLXBinding& binding)
 
 void ReleaseEGL()
 {
-  // eglGetCurrentContext() answers for the API bound on this thread; VTK's contexts are
-  // desktop OpenGL ones.
-  if (eglQueryAPI() != EGL_OPENGL_API)
-  {
-    eglBindAPI(EGL_OPENGL_API);
-  }
+  // glvnd answers eglGetCurrentContext() from its thread state, whatever API is bound, and
+  // without loading any EGL driver: an X-only program pays nothing here. (eglBindAPI would load
+  // the EGL vendor libraries.)
   if (eglGetCurrentContext() != EGL_NO_CONTEXT)
   {
     eglMakeCurrent(eglGetCurrentDisplay(), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);

@@ -515,8 +515,13 @@ public:
     }
     if (platform == PLATFORM_DEVICE)
     {
+      std::string tried = errors.str();
+      if (tried.size() > 2)
+      {
+        tried = ", failing: " + tried.substr(0, tried.size() - 2);
+      }
       error = "No EGL GPU device could be used (" + std::to_string(count) + " EGL device(s) found" +
-        (count ? ", all software or failing: " + errors.str() : "") + ")";
+        (count ? ", software devices skipped" + tried : "") + ")";
       if (!egl.PlatformDevice)
       {
         error += "; this EGL cannot enumerate devices";
