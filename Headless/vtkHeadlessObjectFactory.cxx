@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cctype>
 #include <cstdlib>
+#include <map>
 #include <mutex>
 #include <set>
 #include <string>
@@ -267,18 +268,23 @@ bool vtkHeadlessObjectFactory::HasUsableDisplay()
     return false;
   }
   // Opening a connection costs about a millisecond locally (more for a remote server that does
-  // not answer): remember the answer for each DISPLAY value.
+  // not answer): remember the answer for each DISPLAY value. The connection that answered stays
+  // open: an X server that has no client left resets itself (Xvfb under xvfb-run does), and a
+  // window connecting during that reset is refused, so closing the probe would make the X window
+  // that follows it fail now and then.
   static std::mutex mutex;
   static std::string lastValue;
   static bool lastAnswer = false;
+  static std::map<std::string, Display*>* openDisplays = new std::map<std::string, Display*>();
   std::lock_guard<std::mutex> lock(mutex);
   if (lastValue != value)
   {
-    Display* display = XOpenDisplay(value);
+    auto it = openDisplays->find(value);
+    Display* display = (it != openDisplays->end()) ? it->second : XOpenDisplay(value);
     lastAnswer = (display != nullptr);
     if (display)
     {
-      XCloseDisplay(display);
+      (*openDisplays)[value] = display;
     }
     lastValue = value;
   }
