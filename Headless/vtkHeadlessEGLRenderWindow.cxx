@@ -286,7 +286,7 @@ class vtkHeadlessEGLRenderWindow::vtkInternals
 public:
   EGLDisplay Display = EGL_NO_DISPLAY;
   EGLContext Context = EGL_NO_CONTEXT;
-  EGLSurface Surface = EGL_NO_SURFACE; // a 1x1 pbuffer, only without EGL_KHR_surfaceless_context
+  EGLSurface Surface = EGL_NO_SURFACE; // a 1x1 pbuffer, or none (EGL_KHR_surfaceless_context)
 
   bool Failed = false;
   std::string Error;
@@ -312,6 +312,8 @@ public:
 
   // Tries one display: initializes it and creates a context on it. On failure the display is
   // released again and `why` says what went wrong.
+  bool PreferSurfaceless = false;
+
   bool TryDisplay(EGLDisplay display, std::string& why)
   {
     if (display == EGL_NO_DISPLAY)
@@ -339,18 +341,38 @@ public:
       return false;
     }
     const char* displayExtensions = eglQueryString(display, EGL_EXTENSIONS);
-    const bool surfaceless = HasExtension(displayExtensions, "EGL_KHR_surfaceless_context");
+    const bool surfacelessContext = HasExtension(displayExtensions, "EGL_KHR_surfaceless_context");
 
-    // VTK draws into its own framebuffer objects: the config only has to allow an OpenGL
-    // context, and a pbuffer where a surface is unavoidable. (EGL_SURFACE_TYPE must be given:
-    // its default, EGL_WINDOW_BIT, matches no config on the surfaceless and device platforms.)
-    const EGLint configAttributes[] = { EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
-      surfaceless ? EGL_DONT_CARE : EGL_PBUFFER_BIT, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8,
-      EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8, EGL_NONE };
+    // VTK draws into its own framebuffer objects, so the default framebuffer is never drawn to.
+    // It is still given a 1x1 pbuffer, as VTK's own EGL window has one: VTK binds framebuffer 0
+    // at the end of a frame, and a complete one keeps that harmless on every driver. Without a
+    // pbuffer config, EGL_KHR_surfaceless_context allows no surface at all. (EGL_SURFACE_TYPE
+    // must be given: its default, EGL_WINDOW_BIT, matches no config on these platforms.)
     EGLConfig config = nullptr;
     EGLint numberOfConfigs = 0;
-    if (!eglChooseConfig(display, configAttributes, &config, 1, &numberOfConfigs) ||
-      numberOfConfigs < 1)
+    bool pbuffer = true;
+    const bool noSurface = this->PreferSurfaceless && surfacelessContext;
+    for (EGLint surfaceType : { EGL_PBUFFER_BIT, EGL_DONT_CARE })
+    {
+      if (noSurface && surfaceType == EGL_PBUFFER_BIT)
+      {
+        continue;
+      }
+      const EGLint configAttributes[] = { EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE,
+        surfaceType, EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
+        EGL_NONE };
+      if (eglChooseConfig(display, configAttributes, &config, 1, &numberOfConfigs) &&
+        numberOfConfigs > 0)
+      {
+        pbuffer = (surfaceType == EGL_PBUFFER_BIT);
+        break;
+      }
+      if (!surfacelessContext)
+      {
+        break;
+      }
+    }
+    if (numberOfConfigs < 1)
     {
       why = "no EGL config for an OpenGL context: " + LastEGLError();
       DisplayUsers::Release(display);
@@ -380,18 +402,19 @@ public:
     }
 
     EGLSurface surface = EGL_NO_SURFACE;
-    if (!surfaceless)
+    if (pbuffer)
     {
       const EGLint pbufferAttributes[] = { EGL_WIDTH, 1, EGL_HEIGHT, 1, EGL_NONE };
       surface = eglCreatePbufferSurface(display, config, pbufferAttributes);
-      if (surface == EGL_NO_SURFACE)
-      {
-        why = "no pbuffer surface (and no EGL_KHR_surfaceless_context): " + LastEGLError();
-        eglDestroyContext(display, context);
-        DisplayUsers::Release(display);
-        return false;
-      }
     }
+    if (surface == EGL_NO_SURFACE && !surfacelessContext)
+    {
+      why = "no pbuffer surface (and no EGL_KHR_surfaceless_context): " + LastEGLError();
+      eglDestroyContext(display, context);
+      DisplayUsers::Release(display);
+      return false;
+    }
+    eglGetError();
 
     this->Display = display;
     this->Context = context;
@@ -591,6 +614,7 @@ vtkStandardNewMacro(vtkHeadlessEGLRenderWindow);
 //------------------------------------------------------------------------------
 vtkHeadlessEGLRenderWindow::vtkHeadlessEGLRenderWindow()
   : Platform(PLATFORM_AUTOMATIC)
+  , PreferSurfacelessContext(false)
   , Internals(new vtkInternals)
 {
   this->DeviceIndex = -1;
@@ -622,6 +646,24 @@ void vtkHeadlessEGLRenderWindow::SetPlatform(int platform)
   this->Platform = platform;
   this->Internals->Failed = false; // a new choice deserves a new attempt
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkHeadlessEGLRenderWindow::SetPreferSurfacelessContext(bool prefer)
+{
+  if (prefer == this->PreferSurfacelessContext)
+  {
+    return;
+  }
+  this->PreferSurfacelessContext = prefer;
+  this->Internals->Failed = false;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkHeadlessEGLRenderWindow::GetContextIsSurfaceless()
+{
+  return this->HasContext() && this->Internals->Surface == EGL_NO_SURFACE;
 }
 
 //------------------------------------------------------------------------------
@@ -693,6 +735,7 @@ bool vtkHeadlessEGLRenderWindow::EnsureContext()
 
   std::string error;
   std::string warnings;
+  impl->PreferSurfaceless = this->PreferSurfacelessContext;
   if (!impl->Create(this->Platform, this->DeviceIndex, error, warnings))
   {
     impl->Failed = true;
@@ -971,6 +1014,8 @@ const char* vtkHeadlessEGLRenderWindow::ReportCapabilities()
   {
     os << " (device " << this->Internals->DeviceIndexInUse << ")";
   }
+  os << "\nEGL surface:  "
+     << (this->Internals->Surface != EGL_NO_SURFACE ? "1x1 pbuffer" : "none (surfaceless context)");
   os << "\nEGL vendor string:  " << this->Internals->EGLVendor
      << "\nEGL version string:  " << this->Internals->EGLVersion << "\n";
   os << this->Superclass::ReportCapabilities();
@@ -1173,6 +1218,8 @@ void vtkHeadlessEGLRenderWindow::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   const char* platforms[] = { "automatic", "device", "surfaceless" };
   os << indent << "Platform: " << platforms[this->Platform] << "\n";
+  os << indent << "PreferSurfacelessContext: " << (this->PreferSurfacelessContext ? "on" : "off")
+     << "\n";
   os << indent << "HasContext: " << (this->HasContext() ? "yes" : "no") << "\n";
   os << indent << "PlatformInUse: " << this->Internals->PlatformInUse << "\n";
   os << indent << "DeviceIndexInUse: " << this->Internals->DeviceIndexInUse << "\n";

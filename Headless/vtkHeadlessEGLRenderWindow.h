@@ -30,10 +30,10 @@
  *
  * The context is the highest OpenGL core profile the display gives, from 4.6 down to 3.2. The
  * window is always offscreen: VTK 9.1 renders into its own framebuffer objects and reads pixels
- * from them, so the context has no surface at all when the display supports
- * EGL_KHR_surfaceless_context (a 1x1 pbuffer otherwise). Resizing therefore only resizes VTK's
- * framebuffers. Several windows may live in one process; they share the EGL display, which is
- * terminated when the last window that initialized it is finalized.
+ * from them, so the context's own surface is a 1x1 pbuffer (or none at all, through
+ * EGL_KHR_surfaceless_context, where pbuffers are missing) whatever the window size. Resizing
+ * therefore only resizes VTK's framebuffers. Several windows may live in one process; they share
+ * the EGL display, which is terminated when the last window that initialized it is finalized.
  *
  * When no display or context can be had, the window reports it once with vtkErrorMacro (also
  * available from GetInitializationError()) and every later Render() or pixel read does nothing.
@@ -88,6 +88,22 @@ public:
   void SetPlatformToDevice() { this->SetPlatform(PLATFORM_DEVICE); }
   void SetPlatformToSurfaceless() { this->SetPlatform(PLATFORM_SURFACELESS); }
   ///@}
+
+  ///@{
+  /**
+   * By default the context gets a 1x1 pbuffer surface (see the class description). With this on,
+   * it gets no surface at all when the display supports EGL_KHR_surfaceless_context (VTK renders
+   * the same either way). Takes effect when the context is next created.
+   */
+  virtual void SetPreferSurfacelessContext(bool prefer);
+  vtkGetMacro(PreferSurfacelessContext, bool);
+  vtkBooleanMacro(PreferSurfacelessContext, bool);
+  ///@}
+
+  /**
+   * True when the context has no surface (EGL_KHR_surfaceless_context), false with its pbuffer.
+   */
+  bool GetContextIsSurfaceless();
 
   /**
    * The EGL device to render on: an index into the list of eglQueryDevicesEXT (see
@@ -216,6 +232,7 @@ protected:
   bool CanAccessPixels();
 
   int Platform;
+  bool PreferSurfacelessContext;
 
 private:
   vtkHeadlessEGLRenderWindow(const vtkHeadlessEGLRenderWindow&) = delete;

@@ -10,7 +10,8 @@
 =========================================================================*/
 // An EGL window, created by name with its automatic platform choice (a GPU if there is one, else
 // Mesa's surfaceless platform), renders the lit test scene with no X server and matches the
-// baseline. It must report a core profile of OpenGL 3.2 or later and the strings it got.
+// baseline, with its default 1x1 pbuffer and again without any surface. It must report a core
+// profile of OpenGL 3.2 or later and the strings it got.
 #include "HeadlessTestScene.h"
 
 #include "vtkHeadlessEGLRenderWindow.h"
@@ -56,6 +57,20 @@ int TestHeadlessEGLWindow(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  int retVal = vtkRegressionTestImage(window);
-  return !retVal;
+  int passed = (vtkRegressionTestImage(window) == vtkTesting::PASSED);
+
+  // The same scene in a context without any surface (EGL_KHR_surfaceless_context) instead of
+  // the default 1x1 pbuffer: VTK renders into its own framebuffers either way.
+  vtkNew<vtkHeadlessEGLRenderWindow> noSurface;
+  noSurface->PreferSurfacelessContextOn();
+  HeadlessTestScene::Add(noSurface);
+  noSurface->Render();
+  if (window->GetContextIsSurfaceless() || !noSurface->GetContextIsSurfaceless())
+  {
+    std::cerr << "expected a pbuffer by default and no surface when asked (this EGL lacks "
+                 "EGL_KHR_surfaceless_context?)\n";
+    return EXIT_FAILURE;
+  }
+  passed &= (vtkRegressionTestImage(noSurface) == vtkTesting::PASSED);
+  return passed ? EXIT_SUCCESS : EXIT_FAILURE;
 }
