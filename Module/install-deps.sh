@@ -8,9 +8,10 @@ packages=(
   libvtk9-dev vtk9 python3-vtk9        # VTK 9.1: headers, wrapping tools, Python modules
   libglew-dev libegl-dev libgl-dev     # headers of the GL libraries VTK links (EGL for headless)
   libegl-mesa0 libgl1-mesa-dri         # Mesa's llvmpipe for machines without a GPU
-  libosmesa6-dev                       # OSMesa, the other CPU-only headless path
+  libosmesa6-dev                       # OSMesa: only docs/headless-osmesa (why it is not used)
   xvfb xauth                           # X server for the tests that use VTK's X window
   tetgen libtet1.5-dev                 # TetGen for the optional meshing module and the ladder
+  xz-utils                             # Module/bundle-gpu.sh compresses the GPU bundle
 )
 
 missing=()
