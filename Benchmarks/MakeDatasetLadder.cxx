@@ -19,7 +19,7 @@
 //   torus    non-convex (a solid torus): TetGen -pq1.414a<volume> on TetGenInputs/torus.off.
 //   comb     non-convex (a comb with 6 teeth, a ray crosses its boundary up to 12 times):
 //            TetGen -pq1.414a<volume> on TetGenInputs/comb.poly.
-//   lattice  strongly non-convex (a 4x4x4-cell jungle gym of square bars, genus 48, a ray along
+//   lattice  strongly non-convex (a 4x4x4-cell jungle gym of square bars, genus 176, a ray along
 //            an axis crosses up to 10 walls): built in VTK from voxels, meshed with TetGen.
 // TetGen meshes carry "Synthetic" = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z) (SOURCES.md). The
 // TetGen families need the optional module TiledRayCast::FiltersTetGen (AGPL-3+ TetGen).
