@@ -87,7 +87,9 @@ public:
   ///@{
   /**
    * Maximum tetrahedron volume (TetGen -a<volume>), in the input's units cubed. Zero (the
-   * default) imposes none.
+   * default) imposes none. TetGen meets it for all but a few tetrahedra next to the surface (9
+   * of 140,344 on the test torus, at most 23% over), and with PreserveSurface on a coarse
+   * surface it may not refine at all.
    */
   vtkSetClampMacro(MaximumVolume, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(MaximumVolume, double);
