@@ -13,6 +13,23 @@ vtk_module_export_find_packages(
   FILE_NAME         "TiledRayCast-vtk-module-find-packages.cmake"
   MODULES           ${trc_modules})
 
+# Find modules that the exported find-packages file needs (TetGen for the optional
+# TiledRayCast::FiltersTetGen), next to the config file, in the build and the install tree; the
+# config file puts its own directory on CMAKE_MODULE_PATH while it finds them.
+set(_trc_find_modules)
+if (TILEDRAYCAST_ENABLE_TETGEN)
+  list(APPEND _trc_find_modules "${CMAKE_CURRENT_LIST_DIR}/FindTetGen.cmake")
+endif ()
+foreach (_trc_find_module IN LISTS _trc_find_modules)
+  configure_file("${_trc_find_module}" "${CMAKE_BINARY_DIR}/${_trc_cmake_destination}" COPYONLY)
+endforeach ()
+if (_trc_find_modules)
+  install(
+    FILES       ${_trc_find_modules}
+    DESTINATION "${_trc_cmake_destination}"
+    COMPONENT   development)
+endif ()
+
 # The VTK components the config file asks for: those our modules depend on.
 set(TILEDRAYCAST_VTK_COMPONENTS
   CommonCore CommonDataModel CommonExecutionModel CommonMath CommonSystem CommonTransforms

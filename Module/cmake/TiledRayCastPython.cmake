@@ -12,9 +12,14 @@ vtk_module_wrap_python(
   BUILD_STATIC        OFF)
 
 # The package's __init__.py imports vtkmodules first (so that VTK's own wrapped base classes are
-# registered) and then every wrapped module of ours.
+# registered) and then every wrapped module of ours, except the TetGen one: it links AGPL-3+
+# TetGen, so `import tiledraycast` must not load it. Import it by name:
+#   from tiledraycast.vtkFiltersTetGen import vtkTetGenMesher
 set(_trc_python_imports "")
 foreach (_trc_module IN LISTS trc_modules)
+  if (_trc_module STREQUAL "TiledRayCast::FiltersTetGen")
+    continue ()
+  endif ()
   get_property(_trc_library_name GLOBAL PROPERTY "_vtk_module_${_trc_module}_library_name")
   string(APPEND _trc_python_imports "from .${_trc_library_name} import *\n")
 endforeach ()

@@ -1,0 +1,1091 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    MakeDatasetLadder.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Writes the dataset ladder: tetrahedral meshes from about 100K to 30M tetrahedra, convex and
+// strongly non-convex, as .vtu files, for benchmarks. See docs/datasets.md.
+//
+//   MakeDatasetLadder [options] <output directory>
+//
+// Families (every mesh holds only positively oriented linear tetrahedra and one point scalar):
+//   wavelet  convex: vtkRTAnalyticSource on n^3 voxels spanning [-10,10]^3, split by
+//            vtkDataSetTriangleFilter into 5 tetrahedra per voxel; scalar "RTData".
+//   torus    non-convex (a solid torus): TetGen -pq1.414a<volume> on TetGenInputs/torus.off.
+//   comb     non-convex (a comb with 6 teeth, a ray crosses its boundary up to 12 times):
+//            TetGen -pq1.414a<volume> on TetGenInputs/comb.poly.
+//   lattice  strongly non-convex (a 4x4x4-cell jungle gym of square bars, genus 176, a ray along
+//            an axis crosses up to 10 walls): built in VTK from voxels, meshed with TetGen.
+// TetGen meshes carry "Synthetic" = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z) (SOURCES.md). The
+// TetGen families need the optional module TiledRayCast::FiltersTetGen (AGPL-3+ TetGen).
+//
+// The output is deterministic: the same build writes the same bytes. Counts are checked against
+// the table below with --verify (after reading the files back).
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataSetTriangleFilter.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkImageChangeInformation.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStringArray.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkXMLUnstructuredGridReader.h"
+#include "vtkXMLUnstructuredGridWriter.h"
+
+#ifdef TRC_HAVE_TETGEN
+#include "vtkDataSetSurfaceFilter.h"
+#include "vtkTetGenMesher.h"
+#include "vtkThreshold.h"
+#endif
+
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <sys/resource.h>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
+namespace
+{
+//------------------------------------------------------------------------------
+// The ladder. For wavelet rungs the parameter is the number of voxels per axis (5 n^3
+// tetrahedra); for TetGen rungs it is TetGen's maximum volume (-a), with -q1.414. The expected
+// counts were measured with Debian's VTK 9.1 and TetGen 1.5.0 (docs/datasets.md).
+struct Rung
+{
+  const char* Name;
+  const char* Family;
+  double Parameter;
+  vtkIdType Points;
+  vtkIdType Tetrahedra;
+};
+
+const Rung Ladder[] = {
+  // clang-format off
+  { "wavelet_100k", "wavelet", 27, 21952, 98415 },
+  { "wavelet_300k", "wavelet", 39, 64000, 296595 },
+  { "wavelet_1m",   "wavelet", 58, 205379, 975560 },
+  { "wavelet_3m",   "wavelet", 84, 614125, 2963520 },
+  { "wavelet_10m",  "wavelet", 126, 2048383, 10001880 },
+  { "wavelet_30m",  "wavelet", 182, 6128487, 30142840 },
+  { "torus_100k",   "torus",   0.002, 30494, 140344 },
+  { "torus_300k",   "torus",   0.0005, 58363, 298546 },
+  { "torus_1m",     "torus",   0.00013, 202432, 1099635 },
+  { "torus_3m",     "torus",   0.00004, 508965, 2957927 },
+  { "torus_10m",    "torus",   0.0000118, 1658938, 9917097 },
+  { "torus_30m",    "torus",   0.0000039, 4887186, 29722399 },
+  { "comb_100k",    "comb",    0.0022, 22708, 96956 },
+  { "comb_300k",    "comb",    0.0008, 59426, 272607 },
+  { "comb_1m",      "comb",    0.00019, 191575, 998543 },
+  { "comb_3m",      "comb",    0.000063, 533988, 2941679 },
+  { "comb_10m",     "comb",    0.0000185, 1671602, 9710436 },
+  { "lattice_100k", "lattice", 0.017, 36302, 117321 },
+  { "lattice_300k", "lattice", 0.0095, 90286, 332679 },
+  { "lattice_1m",   "lattice", 0.0021, 190033, 793729 },
+  { "lattice_3m",   "lattice", 0.00053, 640377, 3014983 },
+  { "lattice_10m",  "lattice", 0.00016, 1967640, 9959796 },
+  // clang-format on
+};
+
+bool IsTetGenFamily(const std::string& family)
+{
+  return family == "torus" || family == "comb" || family == "lattice";
+}
+
+//------------------------------------------------------------------------------
+struct Options
+{
+  std::string OutputDirectory;
+  std::vector<std::string> Families;
+  std::vector<std::string> Rungs;
+  vtkIdType MaxTets = -1;
+  std::string Inputs = TRC_TETGEN_INPUTS;
+  std::string Compressor = "zlib";
+  std::vector<std::pair<std::string, std::string>> Comparisons; // rung, reference file
+  bool Verify = false;
+  bool VerifyExisting = false;
+  bool List = false;
+};
+
+void Usage(std::ostream& os)
+{
+  os << "Usage: MakeDatasetLadder [options] <output directory>\n"
+        "  --family NAME      wavelet, torus, comb or lattice (repeatable; default all)\n"
+        "  --rung NAME        only this rung, e.g. torus_1m (repeatable)\n"
+        "  --max-tets N       skip rungs of more than N tetrahedra (expected counts)\n"
+        "  --inputs DIR       TetGen inputs torus.off and comb.poly (default " TRC_TETGEN_INPUTS
+        ")\n"
+        "  --compressor NAME  zlib (default), lz4, lzma or none\n"
+        "  --verify           read every file back and check it against the table\n"
+        "  --verify-existing  generate nothing: check the files already in the directory\n"
+        "  --compare RUNG=FILE  check that RUNG is identical to the mesh in FILE (points,\n"
+        "                     tetrahedra and point arrays; e.g. a shipped mesh it reproduces)\n"
+        "  --list             print the selected rungs (a Markdown table) and exit\n";
+}
+
+bool ParseArguments(int argc, char* argv[], Options& options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& out)
+    {
+      if (i + 1 >= argc)
+      {
+        std::cerr << "error: " << arg << " needs a value\n";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string text;
+    if (arg == "--family")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      options.Families.push_back(text);
+    }
+    else if (arg == "--rung")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      options.Rungs.push_back(text);
+    }
+    else if (arg == "--max-tets")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      options.MaxTets = std::strtoll(text.c_str(), &end, 10);
+      if (*end != '\0' || options.MaxTets < 0)
+      {
+        std::cerr << "error: --max-tets wants a non-negative integer, not " << text << "\n";
+        return false;
+      }
+    }
+    else if (arg == "--inputs")
+    {
+      if (!value(options.Inputs))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--compressor")
+    {
+      if (!value(options.Compressor))
+      {
+        return false;
+      }
+      if (options.Compressor != "zlib" && options.Compressor != "lz4" &&
+        options.Compressor != "lzma" && options.Compressor != "none")
+      {
+        std::cerr << "error: unknown compressor " << options.Compressor << "\n";
+        return false;
+      }
+    }
+    else if (arg == "--verify")
+    {
+      options.Verify = true;
+    }
+    else if (arg == "--verify-existing")
+    {
+      options.VerifyExisting = true;
+    }
+    else if (arg == "--compare")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      const auto equals = text.find('=');
+      if (equals == std::string::npos || equals == 0 || equals + 1 == text.size())
+      {
+        std::cerr << "error: --compare wants RUNG=FILE, not " << text << "\n";
+        return false;
+      }
+      options.Comparisons.emplace_back(text.substr(0, equals), text.substr(equals + 1));
+    }
+    else if (arg == "--list")
+    {
+      options.List = true;
+    }
+    else if (arg == "-h" || arg == "--help")
+    {
+      Usage(std::cout);
+      std::exit(EXIT_SUCCESS);
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      std::cerr << "error: unknown option " << arg << "\n";
+      return false;
+    }
+    else if (options.OutputDirectory.empty())
+    {
+      options.OutputDirectory = arg;
+    }
+    else
+    {
+      std::cerr << "error: more than one output directory given\n";
+      return false;
+    }
+  }
+  for (const auto& family : options.Families)
+  {
+    if (family != "wavelet" && !IsTetGenFamily(family))
+    {
+      std::cerr << "error: unknown family " << family << "\n";
+      return false;
+    }
+  }
+  for (const auto& name : options.Rungs)
+  {
+    bool known = false;
+    for (const Rung& rung : Ladder)
+    {
+      known = known || name == rung.Name;
+    }
+    if (!known)
+    {
+      std::cerr << "error: unknown rung " << name << " (see --list)\n";
+      return false;
+    }
+  }
+  return options.List || !options.OutputDirectory.empty();
+}
+
+//------------------------------------------------------------------------------
+// Peak resident memory of this process so far, in MiB.
+double PeakRSSMiB()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// Swaps p2 and p3 of every tetrahedron with det[p1-p0, p2-p0, p3-p0] < 0 (docs/design.md asks
+// for positive tetrahedra); returns how many were swapped and how many have zero volume.
+template <typename ConnT>
+void OrientPositively(
+  vtkPoints* points, vtkCellArray* cells, ConnT* conn, vtkIdType& swapped, vtkIdType& degenerate)
+{
+  vtkSMPThreadLocal<vtkIdType> localSwapped, localDegenerate;
+  const vtkIdType numberOfCells = cells->GetNumberOfCells();
+  vtkSMPTools::For(0, numberOfCells,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkIdType& s = localSwapped.Local();
+      vtkIdType& d = localDegenerate.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        auto* ids = conn + 4 * t;
+        double p[4][3];
+        for (int k = 0; k < 4; ++k)
+        {
+          points->GetPoint(static_cast<vtkIdType>(ids[k]), p[k]);
+        }
+        double e[3][3];
+        for (int k = 0; k < 3; ++k)
+        {
+          vtkMath::Subtract(p[k + 1], p[0], e[k]);
+        }
+        const double det = vtkMath::Determinant3x3(e[0], e[1], e[2]);
+        if (det < 0.0)
+        {
+          std::swap(ids[2], ids[3]);
+          ++s;
+        }
+        else if (det == 0.0)
+        {
+          ++d;
+        }
+      }
+    });
+  swapped = degenerate = 0;
+  for (vtkIdType s : localSwapped)
+  {
+    swapped += s;
+  }
+  for (vtkIdType d : localDegenerate)
+  {
+    degenerate += d;
+  }
+}
+
+// Checks that every cell is a tetrahedron stored as 4 consecutive ids, then orients them.
+bool OrientMesh(vtkUnstructuredGrid* mesh, vtkIdType& swapped, vtkIdType& degenerate)
+{
+  vtkCellArray* cells = mesh->GetCells();
+  const vtkIdType n = cells->GetNumberOfCells();
+  if (cells->GetNumberOfConnectivityIds() != 4 * n)
+  {
+    return false;
+  }
+  vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    if (types->GetValue(c) != VTK_TETRA)
+    {
+      return false;
+    }
+  }
+  if (cells->IsStorage64Bit())
+  {
+    OrientPositively(mesh->GetPoints(), cells, cells->GetConnectivityArray64()->GetPointer(0),
+      swapped, degenerate);
+  }
+  else
+  {
+    OrientPositively(mesh->GetPoints(), cells, cells->GetConnectivityArray32()->GetPointer(0),
+      swapped, degenerate);
+  }
+  cells->Modified();
+  return true;
+}
+
+void AddProvenance(vtkUnstructuredGrid* mesh, const std::string& text)
+{
+  vtkNew<vtkStringArray> provenance;
+  provenance->SetName("Provenance");
+  provenance->InsertNextValue(text);
+  mesh->GetFieldData()->AddArray(provenance);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> MakeWavelet(int n, std::string& provenance)
+{
+  // Extent lo..hi (n voxels) around the source's centre 0, then scaled to [-10,10]^3 so that
+  // every rung fits the same camera. vtkRTAnalyticSource normalises its field by the whole
+  // extent, so the field has the same shape at every size.
+  const int lo = -(n / 2);
+  const int hi = lo + n;
+  vtkNew<vtkRTAnalyticSource> source;
+  source->SetWholeExtent(lo, hi, lo, hi, lo, hi);
+  vtkNew<vtkImageChangeInformation> scale;
+  scale->SetInputConnection(source->GetOutputPort());
+  const double spacing = 20.0 / n;
+  scale->SetOutputSpacing(spacing, spacing, spacing);
+  const double origin = -10.0 - lo * spacing;
+  scale->SetOutputOrigin(origin, origin, origin);
+  vtkNew<vtkDataSetTriangleFilter> tetrahedra;
+  tetrahedra->SetInputConnection(scale->GetOutputPort());
+  tetrahedra->TetrahedraOnlyOn();
+  tetrahedra->Update();
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  mesh->ShallowCopy(tetrahedra->GetOutput());
+  std::ostringstream text;
+  text << "vtkRTAnalyticSource extent [" << lo << "," << hi << "]^3 scaled to [-10,10]^3, "
+       << "vtkDataSetTriangleFilter (5 tetrahedra per voxel); scalar RTData";
+  provenance = text.str();
+  return mesh;
+}
+
+#ifdef TRC_HAVE_TETGEN
+//------------------------------------------------------------------------------
+struct Surface
+{
+  vtkSmartPointer<vtkPolyData> PolyData;
+  std::vector<std::array<double, 3>> Holes;
+  std::vector<std::array<double, 5>> Regions;
+  bool PolygonsAsFacets = false;
+  std::string Description;
+};
+
+// A Geomview .off polyhedron, read as TetGen reads it (double precision, one facet per face).
+bool ReadOFF(const std::string& fileName, Surface& surface)
+{
+  std::ifstream in(fileName);
+  std::string header;
+  vtkIdType numberOfPoints = 0, numberOfFaces = 0, numberOfEdges = 0;
+  if (!(in >> header >> numberOfPoints >> numberOfFaces >> numberOfEdges) || header != "OFF")
+  {
+    return false;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numberOfPoints);
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double x[3];
+    in >> x[0] >> x[1] >> x[2];
+    points->SetPoint(i, x);
+  }
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType f = 0; f < numberOfFaces && in; ++f)
+  {
+    vtkIdType n = 0;
+    in >> n;
+    ids.resize(n);
+    for (auto& id : ids)
+    {
+      in >> id;
+    }
+    polys->InsertNextCell(n, ids.data());
+  }
+  if (!in)
+  {
+    return false;
+  }
+  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
+  surface.PolyData->SetPoints(points);
+  surface.PolyData->SetPolys(polys);
+  return true;
+}
+
+// Reads the next line that is not empty or a comment, split into words.
+bool NextRecord(std::istream& in, std::istringstream& record)
+{
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+    {
+      record.clear();
+      record.str(line);
+      return true;
+    }
+  }
+  return false;
+}
+
+// A TetGen .poly file whose facets are single polygons without facet holes (comb.poly and
+// hollowcube.poly are): its points, facets, hole list and region list.
+bool ReadPoly(const std::string& fileName, Surface& surface)
+{
+  std::ifstream in(fileName);
+  std::istringstream record;
+  vtkIdType numberOfPoints = 0;
+  int dimension = 0, attributes = 0, markers = 0;
+  if (!NextRecord(in, record) ||
+    !(record >> numberOfPoints >> dimension >> attributes >> markers) || dimension != 3 ||
+    numberOfPoints <= 0)
+  {
+    return false;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numberOfPoints);
+  vtkIdType firstNumber = 0;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    vtkIdType index;
+    double x[3];
+    if (!NextRecord(in, record) || !(record >> index >> x[0] >> x[1] >> x[2]))
+    {
+      return false;
+    }
+    if (i == 0)
+    {
+      firstNumber = index;
+    }
+    points->SetPoint(i, x);
+  }
+  vtkIdType numberOfFacets = 0;
+  if (!NextRecord(in, record) || !(record >> numberOfFacets >> markers))
+  {
+    return false;
+  }
+  vtkNew<vtkCellArray> polys;
+  std::vector<vtkIdType> ids;
+  for (vtkIdType f = 0; f < numberOfFacets; ++f)
+  {
+    int polygons = 0, facetHoles = 0;
+    if (!NextRecord(in, record) || !(record >> polygons))
+    {
+      return false;
+    }
+    record >> facetHoles;
+    if (polygons != 1 || facetHoles != 0)
+    {
+      std::cerr << "error: " << fileName << ": facet " << f
+                << " has several polygons or holes, which this reader does not support\n";
+      return false;
+    }
+    vtkIdType n = 0;
+    if (!NextRecord(in, record) || !(record >> n) || n < 3)
+    {
+      return false;
+    }
+    ids.resize(n);
+    for (auto& id : ids)
+    {
+      record >> id;
+      id -= firstNumber;
+    }
+    if (!record)
+    {
+      return false;
+    }
+    polys->InsertNextCell(n, ids.data());
+  }
+  vtkIdType holes = 0;
+  if (NextRecord(in, record) && (record >> holes))
+  {
+    for (vtkIdType h = 0; h < holes; ++h)
+    {
+      vtkIdType index;
+      std::array<double, 3> x;
+      if (!NextRecord(in, record) || !(record >> index >> x[0] >> x[1] >> x[2]))
+      {
+        return false;
+      }
+      surface.Holes.push_back(x);
+    }
+    vtkIdType regions = 0;
+    if (NextRecord(in, record) && (record >> regions))
+    {
+      for (vtkIdType r = 0; r < regions; ++r)
+      {
+        vtkIdType index;
+        std::array<double, 5> region = { 0, 0, 0, 0, -1 };
+        if (!NextRecord(in, record) || !(record >> index >> region[0] >> region[1] >> region[2]))
+        {
+          return false;
+        }
+        record >> region[3] >> region[4];
+        surface.Regions.push_back(region);
+      }
+    }
+  }
+  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
+  surface.PolyData->SetPoints(points);
+  surface.PolyData->SetPolys(polys);
+  // As `tetgen file.poly` does: every polygon is one facet, triangulated by TetGen.
+  surface.PolygonsAsFacets = true;
+  return true;
+}
+
+// The lattice: voxels of a (3n+1)^3 grid with unit spacing, a voxel being solid when at least
+// two of its indices are multiples of 3 (bars of 1x1 section along the three axes, meeting at
+// nodes every 3 units). Its boundary quads come from vtkThreshold + vtkDataSetSurfaceFilter.
+Surface MakeLattice(int n)
+{
+  const int m = 3 * n + 1;
+  vtkNew<vtkImageData> grid;
+  grid->SetDimensions(m + 1, m + 1, m + 1);
+  vtkNew<vtkUnsignedCharArray> solid;
+  solid->SetName("Solid");
+  solid->SetNumberOfValues(static_cast<vtkIdType>(m) * m * m);
+  for (int k = 0; k < m; ++k)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      for (int i = 0; i < m; ++i)
+      {
+        const int onAxes = (i % 3 == 0) + (j % 3 == 0) + (k % 3 == 0);
+        solid->SetValue(i + m * (j + m * static_cast<vtkIdType>(k)), onAxes >= 2 ? 1 : 0);
+      }
+    }
+  }
+  grid->GetCellData()->SetScalars(solid);
+  vtkNew<vtkThreshold> threshold;
+  threshold->SetInputData(grid);
+  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Solid");
+  threshold->SetLowerThreshold(0.5);
+  threshold->SetUpperThreshold(1.5);
+  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+  vtkNew<vtkDataSetSurfaceFilter> boundary;
+  boundary->SetInputConnection(threshold->GetOutputPort());
+  boundary->Update();
+  Surface surface;
+  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
+  surface.PolyData->SetPoints(boundary->GetOutput()->GetPoints());
+  surface.PolyData->SetPolys(boundary->GetOutput()->GetPolys());
+  surface.PolygonsAsFacets = true; // planar quads
+  return surface;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> MakeTetGen(
+  const Surface& surface, double maxVolume, std::string& switches)
+{
+  vtkNew<vtkTetGenMesher> mesher;
+  mesher->SetInputData(surface.PolyData);
+  mesher->QualityOn();
+  mesher->SetRadiusEdgeRatio(1.414);
+  mesher->SetMaximumVolume(maxVolume);
+  mesher->SetPolygonsAsFacets(surface.PolygonsAsFacets);
+  for (const auto& hole : surface.Holes)
+  {
+    mesher->AddHole(hole[0], hole[1], hole[2]);
+  }
+  for (const auto& region : surface.Regions)
+  {
+    mesher->AddRegion(region[0], region[1], region[2], region[3], region[4]);
+  }
+  mesher->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  mesher->Update();
+  switches = mesher->GetTetGenSwitches();
+  if (mesher->GetErrorCode() != 0 || mesher->GetOutput()->GetNumberOfCells() == 0)
+  {
+    return nullptr;
+  }
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  mesh->ShallowCopy(mesher->GetOutput());
+
+  // "Synthetic" from the double coordinates, then the points stored as float (as the shipped
+  // TetGen meshes are; TiledRayCast keeps float coordinates on the GPU anyway).
+  vtkDataArray* xyz = mesh->GetPoints()->GetData();
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  vtkNew<vtkFloatArray> synthetic;
+  synthetic->SetName("Synthetic");
+  synthetic->SetNumberOfValues(n);
+  vtkNew<vtkFloatArray> single;
+  single->SetNumberOfComponents(3);
+  single->SetNumberOfTuples(n);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double p[3];
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        xyz->GetTuple(i, p);
+        synthetic->SetValue(i,
+          static_cast<float>(
+            0.5 + 0.5 * std::sin(1.5 * p[0]) * std::cos(1.5 * p[1]) * std::cos(2.0 * p[2])));
+        single->SetTypedTuple(i,
+          std::array<float, 3>{
+            static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]) }
+            .data());
+      }
+    });
+  vtkNew<vtkPoints> points;
+  points->SetData(single);
+  mesh->SetPoints(points);
+  mesh->GetPointData()->SetScalars(synthetic);
+  return mesh;
+}
+#endif
+
+//------------------------------------------------------------------------------
+bool Write(vtkUnstructuredGrid* mesh, const std::string& fileName, const std::string& compressor)
+{
+  vtkNew<vtkXMLUnstructuredGridWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(fileName.c_str());
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff();
+  writer->SetHeaderTypeToUInt64();
+  // Point ids fit in 32 bits up to 2^31 points: half the connectivity on disk.
+  writer->SetIdTypeToInt32();
+  if (compressor == "zlib")
+  {
+    writer->SetCompressorTypeToZLib();
+  }
+  else if (compressor == "lz4")
+  {
+    writer->SetCompressorTypeToLZ4();
+  }
+  else if (compressor == "lzma")
+  {
+    writer->SetCompressorTypeToLZMA();
+  }
+  else
+  {
+    writer->SetCompressorTypeToNone();
+  }
+  return writer->Write() == 1;
+}
+
+// Reads a rung back and checks it: the expected counts, tetrahedra only, all positive, the
+// scalar present and finite.
+bool Verify(const std::string& fileName, const Rung& rung)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(fileName.c_str());
+  reader->Update();
+  vtkUnstructuredGrid* mesh = reader->GetOutput();
+  bool ok = true;
+  auto fail = [&](const std::string& what)
+  {
+    std::cerr << "verify " << rung.Name << ": " << what << "\n";
+    ok = false;
+  };
+  if (mesh->GetNumberOfPoints() != rung.Points || mesh->GetNumberOfCells() != rung.Tetrahedra)
+  {
+    std::ostringstream text;
+    text << mesh->GetNumberOfPoints() << " points and " << mesh->GetNumberOfCells()
+         << " tetrahedra, expected " << rung.Points << " and " << rung.Tetrahedra
+         << " (another VTK or TetGen version?)";
+    fail(text.str());
+    return false;
+  }
+  vtkIdType swapped = 0, degenerate = 0;
+  if (!OrientMesh(mesh, swapped, degenerate))
+  {
+    fail("cells other than tetrahedra");
+  }
+  else if (swapped != 0 || degenerate != 0)
+  {
+    fail(
+      std::to_string(swapped) + " negative and " + std::to_string(degenerate) + " flat tetrahedra");
+  }
+  const char* scalar = std::string(rung.Family) == "wavelet" ? "RTData" : "Synthetic";
+  vtkDataArray* values = mesh->GetPointData()->GetScalars();
+  if (!values || std::string(values->GetName() ? values->GetName() : "") != scalar ||
+    values->GetNumberOfTuples() != mesh->GetNumberOfPoints())
+  {
+    fail(std::string("no point scalar ") + scalar);
+  }
+  else
+  {
+    double range[2];
+    values->GetRange(range, 0);
+    if (!std::isfinite(range[0]) || !std::isfinite(range[1]))
+    {
+      fail("non-finite scalars");
+    }
+  }
+  return ok;
+}
+
+// True when the mesh in `fileName` equals the one in `referenceName`: the same points (as float),
+// the same tetrahedra in the same order and every point array of the reference, value for value.
+bool Compare(const std::string& fileName, const std::string& referenceName, const Rung& rung)
+{
+  vtkNew<vtkXMLUnstructuredGridReader> ours, theirs;
+  ours->SetFileName(fileName.c_str());
+  ours->Update();
+  theirs->SetFileName(referenceName.c_str());
+  theirs->Update();
+  vtkUnstructuredGrid* a = ours->GetOutput();
+  vtkUnstructuredGrid* b = theirs->GetOutput();
+  auto fail = [&](const std::string& what)
+  {
+    std::cerr << "compare " << rung.Name << " with " << referenceName << ": " << what << "\n";
+    return false;
+  };
+  if (b->GetNumberOfPoints() == 0)
+  {
+    return fail("cannot read the reference");
+  }
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() ||
+    a->GetNumberOfCells() != b->GetNumberOfCells())
+  {
+    return fail("different numbers of points or cells");
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    for (int k = 0; k < 3; ++k)
+    {
+      if (static_cast<float>(p[k]) != static_cast<float>(q[k]))
+      {
+        return fail("point " + std::to_string(i) + " differs");
+      }
+    }
+  }
+  vtkDataArray* ca = a->GetCells()->GetConnectivityArray();
+  vtkDataArray* cb = b->GetCells()->GetConnectivityArray();
+  if (ca->GetNumberOfValues() != cb->GetNumberOfValues())
+  {
+    return fail("different connectivity sizes");
+  }
+  for (vtkIdType i = 0; i < ca->GetNumberOfValues(); ++i)
+  {
+    if (ca->GetComponent(i, 0) != cb->GetComponent(i, 0))
+    {
+      return fail("tetrahedron " + std::to_string(i / 4) + " differs");
+    }
+  }
+  for (int k = 0; k < b->GetPointData()->GetNumberOfArrays(); ++k)
+  {
+    vtkDataArray* reference = b->GetPointData()->GetArray(k);
+    if (!reference)
+    {
+      continue;
+    }
+    vtkDataArray* mine = a->GetPointData()->GetArray(reference->GetName());
+    if (!mine || mine->GetNumberOfComponents() != reference->GetNumberOfComponents())
+    {
+      return fail(std::string("no point array ") + reference->GetName());
+    }
+    for (vtkIdType i = 0; i < reference->GetNumberOfTuples(); ++i)
+    {
+      for (int c = 0; c < reference->GetNumberOfComponents(); ++c)
+      {
+        if (mine->GetComponent(i, c) != reference->GetComponent(i, c))
+        {
+          return fail(std::string("point array ") + reference->GetName() + " differs at point " +
+            std::to_string(i));
+        }
+      }
+    }
+  }
+  std::cout << "  " << rung.Name << " is identical to " << referenceName << std::endl;
+  return true;
+}
+
+std::string Thousands(vtkIdType value)
+{
+  std::string digits = std::to_string(value);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+  {
+    digits.insert(static_cast<size_t>(i), ",");
+  }
+  return digits;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+int main(int argc, char* argv[])
+{
+#ifdef __GLIBC__
+  // glibc gives the free top of the heap back to the system whenever a freed block leaves more
+  // than its trim threshold there, and takes it back at the next allocation. After the large
+  // arrays of a rung are freed, the XML writer's per-block buffers hit exactly that: a storm of
+  // brk calls and page faults (wavelet_3m: writing took 12.2 s, 4.2 s of it system time, and
+  // takes 2.1 s with this padding). 64 MiB of slack at the top of the heap stops it.
+  mallopt(M_TOP_PAD, 64 << 20);
+#endif
+  Options options;
+  if (!ParseArguments(argc, argv, options))
+  {
+    Usage(std::cerr);
+    return EXIT_FAILURE;
+  }
+  auto selected = [&](const Rung& rung)
+  {
+    const std::string family = rung.Family;
+    if (!options.Families.empty() &&
+      std::find(options.Families.begin(), options.Families.end(), family) == options.Families.end())
+    {
+      return false;
+    }
+    if (!options.Rungs.empty() &&
+      std::find(options.Rungs.begin(), options.Rungs.end(), rung.Name) == options.Rungs.end())
+    {
+      return false;
+    }
+    return options.MaxTets < 0 || rung.Tetrahedra <= options.MaxTets;
+  };
+
+  if (options.List)
+  {
+    std::cout << "| rung | family | parameter | points | tetrahedra |\n|---|---|---|---|---|\n";
+    for (const Rung& rung : Ladder)
+    {
+      if (!selected(rung))
+      {
+        continue;
+      }
+      std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
+                << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
+    }
+    return EXIT_SUCCESS;
+  }
+
+  // Never write into the source tree (a build tree inside it, as ./build, is fine). Checked on
+  // the normalised path before creating anything, and on the real path (symbolic links) after.
+  auto inside = [](const std::string& path, const std::string& directory)
+  { return path == directory || path.rfind(directory + "/", 0) == 0; };
+  auto forbidden = [&](const std::string& path, bool real)
+  {
+    auto normal = [&](const std::string& p) {
+      return real ? vtksys::SystemTools::GetRealPath(p) : vtksys::SystemTools::CollapseFullPath(p);
+    };
+    const std::string sources = normal(TRC_SOURCE_DIR);
+    if (inside(normal(path), sources) && !inside(normal(path), normal(TRC_BINARY_DIR)))
+    {
+      std::cerr << "error: " << normal(path) << " is inside the source tree " << sources
+                << "; write the ladder elsewhere\n";
+      return true;
+    }
+    return false;
+  };
+  if (forbidden(options.OutputDirectory, false))
+  {
+    return EXIT_FAILURE;
+  }
+  if (!vtksys::SystemTools::FileIsDirectory(options.OutputDirectory) &&
+    !vtksys::SystemTools::MakeDirectory(options.OutputDirectory))
+  {
+    std::cerr << "error: cannot create " << options.OutputDirectory << "\n";
+    return EXIT_FAILURE;
+  }
+  if (forbidden(options.OutputDirectory, true))
+  {
+    return EXIT_FAILURE;
+  }
+
+  if (!options.VerifyExisting)
+  {
+    std::cout << "| rung | convex | points | tetrahedra | generate (s) | write (s) | file (MiB) "
+                 "| peak RSS so far (MiB) |\n|---|---|---|---|---|---|---|---|\n";
+  }
+  int failures = 0;
+  for (const Rung& rung : Ladder)
+  {
+    if (!selected(rung))
+    {
+      continue;
+    }
+    const std::string family = rung.Family;
+    if (options.VerifyExisting)
+    {
+      const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+      const double start = vtkTimerLog::GetUniversalTime();
+      bool ok = Verify(fileName, rung);
+      for (const auto& comparison : options.Comparisons)
+      {
+        ok = (comparison.first != rung.Name || Compare(fileName, comparison.second, rung)) && ok;
+      }
+      std::cout << rung.Name << ": " << (ok ? "verified" : "FAILED") << " ("
+                << vtkTimerLog::GetUniversalTime() - start << " s)" << std::endl;
+      failures += ok ? 0 : 1;
+      continue;
+    }
+#ifndef TRC_HAVE_TETGEN
+    if (IsTetGenFamily(family))
+    {
+      std::cerr << "skipping " << rung.Name
+                << ": built without TiledRayCast::FiltersTetGen (TILEDRAYCAST_ENABLE_TETGEN)\n";
+      continue;
+    }
+#endif
+    const double start = vtkTimerLog::GetUniversalTime();
+    vtkSmartPointer<vtkUnstructuredGrid> mesh;
+    std::string provenance;
+    if (family == "wavelet")
+    {
+      mesh = MakeWavelet(static_cast<int>(rung.Parameter), provenance);
+    }
+#ifdef TRC_HAVE_TETGEN
+    else
+    {
+      Surface surface;
+      std::string input;
+      bool read = false;
+      if (family == "torus")
+      {
+        input = "torus.off";
+        read = ReadOFF(options.Inputs + "/" + input, surface);
+      }
+      else if (family == "comb")
+      {
+        input = "comb.poly";
+        read = ReadPoly(options.Inputs + "/" + input, surface);
+      }
+      else
+      {
+        input = "lattice";
+        surface = MakeLattice(4);
+        read = surface.PolyData && surface.PolyData->GetNumberOfPolys() > 0;
+      }
+      if (!read)
+      {
+        std::cerr << "error: cannot read " << options.Inputs << "/" << input << "\n";
+        return EXIT_FAILURE;
+      }
+      std::string switches;
+      mesh = MakeTetGen(surface, rung.Parameter, switches);
+      std::ostringstream text;
+      text << "vtkTetGenMesher (TetGen 1.5 library) -" << switches << " on " << input
+           << "; scalar Synthetic = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z)";
+      provenance = text.str();
+    }
+#endif
+    if (!mesh)
+    {
+      std::cerr << "error: " << rung.Name << " could not be generated\n";
+      return EXIT_FAILURE;
+    }
+    vtkIdType swapped = 0, degenerate = 0;
+    if (!OrientMesh(mesh, swapped, degenerate))
+    {
+      std::cerr << "error: " << rung.Name << " holds cells other than tetrahedra\n";
+      return EXIT_FAILURE;
+    }
+    AddProvenance(mesh, std::string("MakeDatasetLadder ") + rung.Name + ": " + provenance);
+    const double generated = vtkTimerLog::GetUniversalTime();
+
+    const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+    if (!Write(mesh, fileName, options.Compressor))
+    {
+      std::cerr << "error: cannot write " << fileName << "\n";
+      return EXIT_FAILURE;
+    }
+    const double written = vtkTimerLog::GetUniversalTime();
+    const vtkIdType points = mesh->GetNumberOfPoints();
+    const vtkIdType tets = mesh->GetNumberOfCells();
+    mesh = nullptr;
+
+    char row[512];
+    std::snprintf(row, sizeof(row), "| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.0f |", rung.Name,
+      family == "wavelet" ? "yes" : "no", Thousands(points).c_str(), Thousands(tets).c_str(),
+      generated - start, written - generated,
+      static_cast<double>(vtksys::SystemTools::FileLength(fileName)) / (1024.0 * 1024.0),
+      PeakRSSMiB());
+    std::cout << row << std::endl;
+    if (swapped > 0 || degenerate > 0)
+    {
+      std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
+                << std::endl;
+    }
+    if (points != rung.Points || tets != rung.Tetrahedra)
+    {
+      std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
+                << " tetrahedra\n";
+      ++failures;
+    }
+    if (options.Verify && !Verify(fileName, rung))
+    {
+      ++failures;
+    }
+    for (const auto& comparison : options.Comparisons)
+    {
+      if (comparison.first == rung.Name && !Compare(fileName, comparison.second, rung))
+      {
+        ++failures;
+      }
+    }
+  }
+  if (failures > 0)
+  {
+    std::cerr << failures << " rungs differ from the table\n";
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
