@@ -37,7 +37,9 @@ vec3 trcCrossing(vec3 a, float da, vec3 b, float db)
 void trcEmit(vec3 q)
 {
   vec4 clip = in_objectToClip * vec4(q, 1.0);
-  gl_Position = clip;
+  // The slice lies on the near plane itself, where rounding would let the clipper cut it away in
+  // places: move it to the middle of the depth range (the fragment shader writes its own depth).
+  gl_Position = vec4(clip.xy, 0.0, clip.w);
   EmitVertex();
 }
 
