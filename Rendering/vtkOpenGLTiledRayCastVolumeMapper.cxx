@@ -207,7 +207,7 @@ public:
     }
     return true;
   }
-  // Waits for the results when they are not there yet.
+  // Zero for segments whose results are not there yet (vtkOpenGLRenderTimer does not wait).
   double GetMilliseconds()
   {
     double ms = 0;
@@ -237,6 +237,7 @@ private:
 struct MeshTexture
 {
   std::string Uniform;
+  int Kind = -1; // vtkTetMeshLayout::ArrayKind: a texture buffer's name never becomes a 2D texture
   vtkNew<vtkOpenGLBufferObject> Buffer;
   vtkNew<vtkTextureObject> Texture;
   vtkIdType Bytes = 0;
@@ -349,7 +350,10 @@ public:
   vtkNew<vtkOpenGLFramebufferObject> OpaqueDepthFramebuffer;
   unsigned int OpaqueDepthFormat = 0;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer[2];
+  // The targets only grow: renderers of different sizes in one window share them, each using
+  // the lower-left ImageSize pixels, and nothing is reallocated from one renderer to the next.
   int TargetSize[2] = { 0, 0 };
+  int ImageSize[2] = { 0, 0 };
 
   // Programs.
   Program FirstHitProgram, PeelProgram, NearSliceProgram, TraversalProgram, CopyProgram,
@@ -599,7 +603,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 
   vtkOpenGLClearErrorMacro();
   vtkIdType uploaded = 0;
-  const bool sameArrays = static_cast<int>(this->MeshTextures.size()) == n;
+  // The same arrays: same count, names and kinds (the layouts differ in all three).
+  bool sameArrays = static_cast<int>(this->MeshTextures.size()) == n;
+  for (int i = 0; sameArrays && i < n; ++i)
+  {
+    sameArrays = this->MeshTextures[i]->Uniform == std::string("in_") + layout->GetArrayName(i) &&
+      this->MeshTextures[i]->Kind == layout->GetArrayKind(i);
+  }
   if (!sameArrays)
   {
     this->ClearMeshTextures();
@@ -617,6 +627,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
       continue; // e.g. only the points moved: topology stays on the GPU
     }
     t->Uniform = std::string("in_") + layout->GetArrayName(i);
+    t->Kind = layout->GetArrayKind(i);
     const int comps = array->GetNumberOfComponents();
     const bool isFloat = array->GetDataType() == VTK_FLOAT;
     static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
@@ -662,7 +673,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 
   // Boundary faces, (tet << 2) | face, drawn without a vertex buffer.
   vtkTetMesh* mesh = this->Builder->GetMesh();
-  if (!sameArrays || mesh->GetMTime() > this->UploadedLayoutTime)
+  if (!sameArrays || mesh->GetTopologyTime() > this->UploadedLayoutTime)
   {
     this->FaceBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
     this->FaceBuffer->Upload(mesh->GetBoundaryFaces(), static_cast<size_t>(this->NumberOfFaces),
@@ -893,11 +904,15 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
-  if (width == this->TargetSize[0] && height == this->TargetSize[1] &&
+  this->ImageSize[0] = width;
+  this->ImageSize[1] = height;
+  if (width <= this->TargetSize[0] && height <= this->TargetSize[1] &&
     this->Framebuffer[0]->GetFBOIndex() != 0)
   {
     return true;
   }
+  width = std::max(width, this->TargetSize[0]);
+  height = std::max(height, this->TargetSize[1]);
   vtkOpenGLState* ostate = window->GetState();
   auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps) {
     tex->SetContext(window);
@@ -1009,10 +1024,16 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
   }
 
   vtkTextureObject* depth = this->OpaqueDepth;
-  const bool resized = depth->GetWidth() != static_cast<unsigned int>(width) ||
-    depth->GetHeight() != static_cast<unsigned int>(height);
+  // Grows only, like the targets.
+  const bool resized = depth->GetWidth() < static_cast<unsigned int>(width) ||
+    depth->GetHeight() < static_cast<unsigned int>(height);
   if (format != this->OpaqueDepthFormat || resized || !depth->GetHandle())
   {
+    const int allocatedWidth = std::max<int>(width, depth->GetHandle() ? depth->GetWidth() : 0);
+    const int allocatedHeight = std::max<int>(height, depth->GetHandle() ? depth->GetHeight() : 0);
+    // A framebuffer object skips re-adding the texture object it already holds, though the
+    // texture behind it is new: start it afresh.
+    this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
     depth->ReleaseGraphicsResources(window);
     depth->SetContext(window);
     depth->SetMinificationFilter(vtkTextureObject::Nearest);
@@ -1022,7 +1043,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
     bool ok = true;
     if (format == GL_DEPTH24_STENCIL8)
     {
-      ok = depth->AllocateDepthStencil(width, height);
+      ok = depth->AllocateDepthStencil(allocatedWidth, allocatedHeight);
     }
     else
     {
@@ -1033,7 +1054,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
                                  : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE
                                        ? GL_FLOAT
                                        : GL_UNSIGNED_INT));
-      ok = depth->Allocate2D(width, height, 1, VTK_FLOAT);
+      ok = depth->Allocate2D(allocatedWidth, allocatedHeight, 1, VTK_FLOAT);
     }
     if (!ok)
     {
@@ -1050,6 +1071,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
     this->OpaqueDepthFormat = format;
   }
 
+  // Errors left by earlier GL calls are not this blit's (vtkOpenGLClearErrorMacro is compiled
+  // out of release builds of VTK).
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
   state->PushDrawFramebufferBinding();
   this->OpaqueDepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   if (format == GL_NONE)
@@ -1066,9 +1092,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
       this->Viewport[1] + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
   state->PopDrawFramebufferBinding();
-  if (glGetError() != GL_NO_ERROR)
+  const GLenum error = glGetError();
+  if (error != GL_NO_ERROR)
   {
-    this->ReportError("Cannot read the depth of the scene's framebuffer. Nothing is drawn.");
+    std::ostringstream msg;
+    msg << "Cannot read the depth of the scene's framebuffer (" << vtkOpenGLStrError(error)
+        << ", depth format 0x" << std::hex << format << "). Nothing is drawn.";
+    this->ReportError(msg.str());
     return false;
   }
   return true;
@@ -1202,8 +1232,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ComputeGeometry(
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
 {
-  const int w = this->TargetSize[0];
-  const int h = this->TargetSize[1];
+  const int w = this->ImageSize[0];
+  const int h = this->ImageSize[1];
   const int size = this->Self->GetTileSize() > 0 ? this->Self->GetTileSize() : std::max(w, h);
   this->Tiles.clear();
   for (int y = 0; y < h; y += size)
@@ -1227,19 +1257,28 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
   {
     return;
   }
-  if (!wait)
-  {
-    if (!this->TotalTimer.Ready())
-    {
-      return;
-    }
+  auto ready = [this]() {
     for (const PhaseTimer& t : this->PhaseTimers)
     {
       if (!t.Ready())
       {
-        return;
+        return false;
       }
     }
+    return this->TotalTimer.Ready();
+  };
+  if (wait)
+  {
+    // vtkOpenGLRenderTimer only polls: finish the frame's work, then poll until the results
+    // have arrived.
+    glFinish();
+    while (!ready())
+    {
+    }
+  }
+  else if (!ready())
+  {
+    return;
   }
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   stats->SetFirstHitTime(this->PhaseTimers[PhaseFirstHit].GetMilliseconds());
@@ -1293,8 +1332,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShaderProgram* p)
 {
   const FrameGeometry& g = this->Geometry;
-  const float viewport[2] = { static_cast<float>(this->TargetSize[0]),
-    static_cast<float>(this->TargetSize[1]) };
+  const float viewport[2] = { static_cast<float>(this->ImageSize[0]),
+    static_cast<float>(this->ImageSize[1]) };
   p->SetUniform2f("in_viewportSize", viewport);
   p->SetUniform3f("in_rayOrigin0", g.RayOrigin[0]);
   p->SetUniform3f("in_rayOriginX", g.RayOrigin[1]);
@@ -1375,8 +1414,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetTargetUniforms(
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
   Program& program, int x0, int y0, int x1, int y1)
 {
-  const float w = static_cast<float>(this->TargetSize[0]);
-  const float h = static_cast<float>(this->TargetSize[1]);
+  const float w = static_cast<float>(this->ImageSize[0]);
+  const float h = static_cast<float>(this->ImageSize[1]);
   const float rect[4] = { 2.0f * x0 / w - 1.0f, 2.0f * y0 / h - 1.0f, 2.0f * x1 / w - 1.0f,
     2.0f * y1 / h - 1.0f };
   program.Shader->SetUniform4f("in_rectangle", rect);
@@ -1388,7 +1427,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawViewport(Program& program)
 {
-  this->DrawRectangle(program, 0, 0, this->TargetSize[0], this->TargetSize[1]);
+  this->DrawRectangle(program, 0, 0, this->ImageSize[0], this->ImageSize[1]);
 }
 
 //------------------------------------------------------------------------------
@@ -1576,6 +1615,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
   this->SetMeshUniforms(traversal);
   this->SetIntegrationUniforms(traversal);
   traversal->SetUniformi("in_tetsPerPass", tetsPerPass);
+  traversal->SetUniformi("in_maximumSteps",
+    static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX)));
 
   if (tetsPerPass == 0)
   {
@@ -1782,6 +1823,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->TotalTimer.ReleaseGraphicsResources();
   this->TimersPending = false;
   this->TargetSize[0] = this->TargetSize[1] = 0;
+  this->ImageSize[0] = this->ImageSize[1] = 0;
   this->UploadedLayoutTime = 0;
   this->UploadedNodesTime = 0;
   this->UploadedTableTime = 0;
@@ -1851,7 +1893,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The tiled ray-cast mapper needs an OpenGL render window.");
     return;
   }
-  vtkOpenGLClearErrorMacro();
   ScopedDebugEvent event("Render");
   this->ResourceCallback->RegisterGraphicsResources(window);
   if (!impl->CheckContext(window))

@@ -67,10 +67,16 @@ uint trcUnpackId(float low, float high)
   return (uint(high) << 20u) + uint(low);
 }
 
-vec4 trcPackState(uint tet, float lambda, int status, int entryFace)
+// state.w = status + 8 * (entry face + 2) + 64 * stalled steps (see trcStalls).
+vec4 trcPackState(uint tet, float lambda, int status, int entryFace, int stalls)
 {
   vec2 id = trcPackId(tet);
-  return vec4(id.x, lambda, id.y, float(status + 8 * (entryFace + 2)));
+  return vec4(id.x, lambda, id.y, float(status + 8 * (entryFace + 2) + 64 * stalls));
+}
+
+vec4 trcPackState(uint tet, float lambda, int status, int entryFace)
+{
+  return trcPackState(tet, lambda, status, entryFace, 0);
 }
 
 uint trcStateTet(vec4 state)
@@ -96,7 +102,14 @@ int trcStatus(vec4 state)
 
 int trcEntryFace(vec4 state)
 {
-  return (int(state.w) >> 3) - 2;
+  return ((int(state.w) >> 3) & 7) - 2;
+}
+
+// Steps in a row that did not move the ray forward (degenerate tets): bounded, so that a ray
+// caught between degenerate tets cannot loop for ever.
+int trcStalls(vec4 state)
+{
+  return int(state.w) >> 6;
 }
 
 struct TrcRay

@@ -17,6 +17,13 @@ uniform sampler2D in_state;
 uniform sampler2D in_color;
 uniform sampler2D in_entry;
 uniform int in_tetsPerPass;
+// With no limit per pass, the most steps one ray may take in one pass (more than any ray can
+// need: every tet once, plus the stalled steps allowed).
+uniform int in_maximumSteps;
+
+// Steps in a row that leave a ray where it is: beyond this, the ray is caught between
+// degenerate tets and leaves the mesh where it stands (it may re-enter at the next layer).
+const int TRC_MAXIMUM_STALLS = 64;
 
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
@@ -41,8 +48,10 @@ void main()
   int entry = trcEntryFace(state);
   uint previous = TRC_NO_NEIGHBOR;
   int status = TRC_ACTIVE;
+  int stalls = trcStalls(state);
   int steps = 0;
-  while (status == TRC_ACTIVE && (in_tetsPerPass == 0 || steps < in_tetsPerPass))
+  int maximumSteps = in_tetsPerPass == 0 ? in_maximumSteps : in_tetsPerPass;
+  while (status == TRC_ACTIVE && steps < maximumSteps)
   {
     ++steps;
     vec3 p[4];
@@ -97,6 +106,7 @@ void main()
       exitLambda = lambda;
     }
     exitLambda = max(exitLambda, lambda);
+    stalls = exitLambda > lambda ? 0 : stalls + 1;
 
     bool stopped = exitLambda >= ray.lambdaMax;
     float endLambda = min(exitLambda, ray.lambdaMax);
@@ -113,7 +123,7 @@ void main()
     {
       status = TRC_DONE_DEPTH;
     }
-    else if (neighbors[exitFace] == TRC_NO_NEIGHBOR)
+    else if (neighbors[exitFace] == TRC_NO_NEIGHBOR || stalls > TRC_MAXIMUM_STALLS)
     {
       status = TRC_WAITING;
     }
@@ -137,6 +147,6 @@ void main()
       entry = neighbors[f] == previous ? f : entry;
     }
   }
-  fragOutput0 = trcPackState(tet, lambda, status, entry);
+  fragOutput0 = trcPackState(tet, lambda, status, entry, status == TRC_ACTIVE ? stalls : 0);
   fragOutput1 = color;
 }
