@@ -71,8 +71,8 @@
 
 #include <algorithm>
 #include <array>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -112,13 +112,13 @@ public:
   explicit ScopedDebugEvent(const char* name)
     : Name(name)
   {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(std::string("vtkOpenGLTiledRayCastVolumeMapper::") +
-      this->Name + " begin");
+    vtkOpenGLRenderUtilities::MarkDebugEvent(
+      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " begin");
   }
   ~ScopedDebugEvent()
   {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(std::string("vtkOpenGLTiledRayCastVolumeMapper::") +
-      this->Name + " end");
+    vtkOpenGLRenderUtilities::MarkDebugEvent(
+      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " end");
   }
   ScopedDebugEvent(const ScopedDebugEvent&) = delete;
   void operator=(const ScopedDebugEvent&) = delete;
@@ -143,9 +143,9 @@ void ToColumnMajor(const double m[16], float out[16])
 struct Tile
 {
   int X0, Y0, X1, Y1;
-  int Parity = 0;       // which of the two ping-pong target sets holds its latest state
-  int Passes = 0;       // ray-casting passes run this frame
-  bool Running = false; // still has rays to advance in the current layer
+  int Parity = 0;                 // which of the two ping-pong target sets holds its latest state
+  int Passes = 0;                 // ray-casting passes run this frame
+  bool Running = false;           // still has rays to advance in the current layer
   unsigned int LastQuery = 0;     // latest count of the tile's active rays
   unsigned int PreviousQuery = 0; // the count before it
 };
@@ -243,7 +243,8 @@ struct MeshTexture
   vtkIdType Bytes = 0;
 };
 
-std::string Substituted(std::string source, const std::vector<std::pair<std::string, std::string>>& replacements)
+std::string Substituted(
+  std::string source, const std::vector<std::pair<std::string, std::string>>& replacements)
 {
   for (const auto& r : replacements)
   {
@@ -257,21 +258,23 @@ double ComputeLongestEdge(vtkTetMesh* mesh)
   const double* points = mesh->GetPoints();
   const uint32_t* tets = mesh->GetTetPoints();
   vtkSMPThreadLocal<double> longest(0.0);
-  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(), [&](vtkIdType begin, vtkIdType end) {
-    double& local = longest.Local();
-    for (vtkIdType t = begin; t < end; ++t)
+  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const uint32_t* ids = tets + 4 * t;
-      for (int i = 0; i < 4; ++i)
+      double& local = longest.Local();
+      for (vtkIdType t = begin; t < end; ++t)
       {
-        for (int j = i + 1; j < 4; ++j)
+        const uint32_t* ids = tets + 4 * t;
+        for (int i = 0; i < 4; ++i)
         {
-          local = std::max(local,
-            vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
+          for (int j = i + 1; j < 4; ++j)
+          {
+            local = std::max(
+              local, vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
+          }
         }
       }
-    }
-  });
+    });
   double result = 0.0;
   for (double v : longest)
   {
@@ -539,8 +542,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
   if (mesh->GetNumberOfBoundaryFaces() > bufferLimit)
   {
     this->ReportError("The mesh has more boundary faces (" +
-      std::to_string(mesh->GetNumberOfBoundaryFaces()) +
-      ") than the texture buffer limit (" + std::to_string(bufferLimit) + "). Nothing is drawn.");
+      std::to_string(mesh->GetNumberOfBoundaryFaces()) + ") than the texture buffer limit (" +
+      std::to_string(bufferLimit) + "). Nothing is drawn.");
     return false;
   }
   if (!layout->Update(mesh))
@@ -567,12 +570,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
     }
     mesh->GetScalarRange(this->ScalarRange);
     this->LongestEdge = ComputeLongestEdge(mesh);
-    const double volume = (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) *
-      (bounds[5] - bounds[4]);
+    const double volume =
+      (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
     // The edge of a regular tetrahedron of the mean volume: a typical segment length.
-    this->TypicalEdge = this->NumberOfTets > 0
-      ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets)
-      : 0.0;
+    this->TypicalEdge =
+      this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
   }
   return true;
 }
@@ -807,8 +809,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
-  vtkOpenGLRenderWindow* window)
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   const bool paper = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
@@ -826,8 +827,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
   }
   const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
     ? vtkTiledRayCastPreIntegration3D
-    : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D ? vtkTiledRayCastPreIntegration2D
-                                                              : vtkTiledRayCastPartialPreIntegration);
+    : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
+          ? vtkTiledRayCastPreIntegration2D
+          : vtkTiledRayCastPartialPreIntegration);
   const std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Version", this->VersionHeader },
     { "//TRC::Common::Dec", vtkTiledRayCastCommonFS },
@@ -860,7 +862,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(
   const Spec specs[] = {
     { &this->FirstHitProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
       false },
-    { &this->PeelProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS, true },
+    { &this->PeelProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
+      true },
     { &this->NearSliceProgram, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
       vtkTiledRayCastNearSliceFS, false },
     { &this->TraversalProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
@@ -914,7 +917,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
   width = std::max(width, this->TargetSize[0]);
   height = std::max(height, this->TargetSize[1]);
   vtkOpenGLState* ostate = window->GetState();
-  auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps) {
+  auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps)
+  {
     tex->SetContext(window);
     tex->SetInternalFormat(internal);
     tex->SetFormat(format);
@@ -1050,10 +1054,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
       const bool stencil = format == GL_DEPTH32F_STENCIL8;
       depth->SetInternalFormat(format == GL_NONE ? GL_DEPTH_COMPONENT32F : format);
       depth->SetFormat(stencil ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT);
-      depth->SetDataType(stencil ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
-                                 : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE
-                                       ? GL_FLOAT
-                                       : GL_UNSIGNED_INT));
+      depth->SetDataType(stencil
+          ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
+          : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE ? GL_FLOAT : GL_UNSIGNED_INT));
       ok = depth->Allocate2D(allocatedWidth, allocatedHeight, 1, VTK_FLOAT);
     }
     if (!ok)
@@ -1144,7 +1147,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ComputeGeometry(
 
   // Near and far points of the rays through NDC (0,0), (1,0) and (0,1): both are affine in
   // NDC for VTK's perspective and parallel cameras, and so are the clip-space w's.
-  auto unproject = [&](double x, double y, double z, double q[3], double& w) {
+  auto unproject = [&](double x, double y, double z, double q[3], double& w)
+  {
     double h[4] = { x, y, z, 1.0 };
     clipToObject->MultiplyPoint(h, h);
     for (int i = 0; i < 3; ++i)
@@ -1257,7 +1261,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
   {
     return;
   }
-  auto ready = [this]() {
+  auto ready = [this]()
+  {
     for (const PhaseTimer& t : this->PhaseTimers)
     {
       if (!t.Ready())
@@ -1348,8 +1353,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShader
   p->SetUniformMatrix4x4("in_objectToClip", const_cast<float*>(g.ObjectToClip));
   p->SetUniform4f("in_nearPlane", g.NearPlane);
   p->SetUniformi("in_opaqueDepth", this->OpaqueDepth->GetTextureUnit());
-  p->SetUniformf("in_earlyTerminationOpacity",
-    static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
+  p->SetUniformf(
+    "in_earlyTerminationOpacity", static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
 }
 
 //------------------------------------------------------------------------------
@@ -1443,8 +1448,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(vtkOpenGLState
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(
-  vtkOpenGLRenderWindow* window)
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRenderWindow* window)
 {
   ScopedDebugEvent event("FirstHit");
   vtkOpenGLState* state = window->GetState();
@@ -1809,9 +1813,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
   this->Depth->ReleaseGraphicsResources(window);
   this->OpaqueDepth->ReleaseGraphicsResources(window);
-  for (Program* p : { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram,
-         &this->TraversalProgram, &this->CopyProgram, &this->CountProgram,
-         &this->CompositeProgram })
+  for (Program* p :
+    { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram, &this->TraversalProgram,
+      &this->CopyProgram, &this->CountProgram, &this->CompositeProgram })
   {
     p->Release(window);
   }
@@ -1902,8 +1906,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   vtkInformation* keys = vol->GetPropertyKeys();
-  if (keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride()) &&
-    !impl->WarnedTranslucentGeometry)
+  if (keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride()) && !impl->WarnedTranslucentGeometry)
   {
     vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
                     "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
@@ -1975,13 +1978,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // GPU timers of the previous frame still in flight are not restarted: this frame is then not
   // timed, and the statistics keep the latest times measured.
   const bool timing = !impl->TimersPending;
-  auto start = [&](PhaseTimer& t) {
+  auto start = [&](PhaseTimer& t)
+  {
     if (timing)
     {
       t.Start();
     }
   };
-  auto stop = [&](PhaseTimer& t) {
+  auto stop = [&](PhaseTimer& t)
+  {
     if (timing)
     {
       t.Stop();

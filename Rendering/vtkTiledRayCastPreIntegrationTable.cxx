@@ -55,8 +55,8 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
   size[0] = std::max(size[0], 2);
   size[1] = size[0];
   size[2] = this->Dimension == 3
-    ? std::max(2, std::min(this->RequestedLengthSize > 0 ? this->RequestedLengthSize : 64,
-                    this->MaximumSize))
+    ? std::max(2,
+        std::min(this->RequestedLengthSize > 0 ? this->RequestedLengthSize : 64, this->MaximumSize))
     : 1;
   if (this->BuiltFrom == source && this->BuiltTime >= this->GetMTime() &&
     std::equal(size, size + 3, this->Size) && this->Range[0] == scalarRange[0] &&
@@ -83,26 +83,28 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
   float* table = this->Table.data();
   const double lo = scalarRange[0];
   // One (front, back) row of lengths per work item.
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n, [&](vtkIdType begin, vtkIdType end) {
-    double rgba[4];
-    for (vtkIdType fb = begin; fb < end; ++fb)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int front = static_cast<int>(fb % n);
-      const int back = static_cast<int>(fb / n);
-      const double sf = lo + width * front / (n - 1);
-      const double sb = lo + width * back / (n - 1);
-      for (int l = 0; l < nl; ++l)
+      double rgba[4];
+      for (vtkIdType fb = begin; fb < end; ++fb)
       {
-        const double length = is3D ? maxLength * l / (nl - 1) : reference;
-        integrator->Integrate(sf, sb, length, rgba);
-        float* entry = table + 4 * ((static_cast<size_t>(l) * n + back) * n + front);
-        for (int c = 0; c < 4; ++c)
+        const int front = static_cast<int>(fb % n);
+        const int back = static_cast<int>(fb / n);
+        const double sf = lo + width * front / (n - 1);
+        const double sb = lo + width * back / (n - 1);
+        for (int l = 0; l < nl; ++l)
         {
-          entry[c] = static_cast<float>(rgba[c]);
+          const double length = is3D ? maxLength * l / (nl - 1) : reference;
+          integrator->Integrate(sf, sb, length, rgba);
+          float* entry = table + 4 * ((static_cast<size_t>(l) * n + back) * n + front);
+          for (int c = 0; c < 4; ++c)
+          {
+            entry[c] = static_cast<float>(rgba[c]);
+          }
         }
       }
-    }
-  });
+    });
   this->BuiltFrom = source;
   this->Modified();
   this->BuiltTime = this->GetMTime();
@@ -145,8 +147,7 @@ void vtkTiledRayCastPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Dimension: " << this->Dimension << "\n";
-  os << indent << "Size: " << this->Size[0] << " " << this->Size[1] << " " << this->Size[2]
-     << "\n";
+  os << indent << "Size: " << this->Size[0] << " " << this->Size[1] << " " << this->Size[2] << "\n";
   os << indent << "ScalarRange: " << this->Range[0] << " " << this->Range[1] << "\n";
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "ReferenceLength: " << this->ReferenceLength << "\n";

@@ -95,7 +95,10 @@ public:
   /**
    * The table, RGBA float, front scalar fastest, then back scalar, then length.
    */
-  float* GetTable() { return this->Table.data(); }
+  float* GetTable()
+  {
+    return this->Table.data();
+  }
 #endif
 
   /**

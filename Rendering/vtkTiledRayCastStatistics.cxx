@@ -124,8 +124,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MeshBytesPerTetrahedron: " << this->MeshBytesPerTetrahedron << "\n";
   os << indent << "TransferFunctionBytes: " << this->TransferFunctionBytes << "\n";
   os << indent << "RenderTargetBytes: " << this->RenderTargetBytes << "\n";
-  os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes
-     << "\n";
+  os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes << "\n";
   os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize[0] << " "
      << this->PreIntegrationTableSize[1] << " " << this->PreIntegrationTableSize[2] << "\n";
 }

@@ -190,7 +190,10 @@ public:
    * Per-tile pass counts of the last render (tiles that ran no pass are left out); the mapper
    * fills this and the min/median/max above are computed from it by FinishTilePasses().
    */
-  std::vector<int>& GetPassesPerTile() { return this->PassesPerTile; }
+  std::vector<int>& GetPassesPerTile()
+  {
+    return this->PassesPerTile;
+  }
 #endif
   void FinishTilePasses();
 

@@ -106,8 +106,7 @@ struct PropertyFunctions
       return IsLinear(this->Gray);
     }
     if (this->Color->GetColorSpace() != VTK_CTF_RGB || this->Color->GetScale() != VTK_CTF_LINEAR ||
-      this->Color->GetUseAboveRangeColor() ||
-      this->Color->GetUseBelowRangeColor())
+      this->Color->GetUseAboveRangeColor() || this->Color->GetUseBelowRangeColor())
     {
       return false;
     }
@@ -139,8 +138,8 @@ struct PropertyFunctions
   {
     double range[2];
     this->Opacity->GetRange(range);
-    double opacity = IsOutside(s, side, this->Opacity->GetClamping() != 0, range,
-                       this->Opacity->GetSize())
+    double opacity =
+      IsOutside(s, side, this->Opacity->GetClamping() != 0, range, this->Opacity->GetSize())
       ? 0.0
       : this->Opacity->GetValue(s);
     attenuation = std::max(opacity, 0.0) / this->UnitDistance;
@@ -231,8 +230,8 @@ void vtkTiledRayCastTransferFunction::Build(
   PropertyFunctions functions(property);
   if (!(functions.UnitDistance > 0.0))
   {
-    vtkWarningMacro("Scalar opacity unit distance " << functions.UnitDistance
-                                                    << " is not positive: using 1.");
+    vtkWarningMacro(
+      "Scalar opacity unit distance " << functions.UnitDistance << " is not positive: using 1.");
     functions.UnitDistance = 1.0;
   }
   this->Exact = functions.IsPiecewiseLinear();
@@ -310,8 +309,8 @@ void vtkTiledRayCastTransferFunction::Build(
         stack.pop_back();
         // Test the midpoint and the quarter points so that a narrow bump is not missed.
         bool split = false;
-        if (static_cast<int>(this->Scalars.size()) < maxNodes - 2 &&
-          iv.B - iv.A > minWidth && iv.Depth < 40)
+        if (static_cast<int>(this->Scalars.size()) < maxNodes - 2 && iv.B - iv.A > minWidth &&
+          iv.Depth < 40)
         {
           for (double q : { 0.25, 0.5, 0.75 })
           {
@@ -356,9 +355,9 @@ void vtkTiledRayCastTransferFunction::Build(
   if (!this->Exact && static_cast<int>(this->Scalars.size()) >= maxNodes - 2)
   {
     vtkWarningMacro("The transfer function needs more than " << maxNodes
-                                                           << " linear pieces to be represented "
-                                                              "within the tolerance "
-                                                           << tolerance << ".");
+                                                             << " linear pieces to be represented "
+                                                                "within the tolerance "
+                                                             << tolerance << ".");
   }
 
   // Statistics and the shader's texels.

@@ -106,7 +106,10 @@ public:
    * The nodes as the shader reads them: two RGBA32F texels per node,
    * (s, attenuation, 0, 0) and (r, g, b, 0).
    */
-  const std::vector<float>& GetNodeTexels() const { return this->Texels; }
+  const std::vector<float>& GetNodeTexels() const
+  {
+    return this->Texels;
+  }
 #endif
 
 protected:

@@ -61,17 +61,14 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
-  os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer
-     << "\n";
+  os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
-  os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize
-     << "\n";
-  os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize
-     << "\n";
+  os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";
+  os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize << "\n";
   os << indent << "SynchronousStatistics: " << this->SynchronousStatistics << "\n";
   os << indent << "Statistics:\n";
   this->Statistics->PrintSelf(os, indent.GetNextIndent());

@@ -164,16 +164,19 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
-  ok = Refused("too large", spx, "texture buffer", [](vtkTiledRayCastVolumeMapper* m) {
-    m->SetMaximumTextureBufferSize(1000);
-  }) && ok;
-  ok = Refused("too large (paper)", spx, "texture", [](vtkTiledRayCastVolumeMapper* m) {
-    m->SetMeshLayoutToPaper();
-    m->SetMaximumTextureSize(64);
-  }) && ok;
-  ok = Refused("maximum intensity", spx, "composite", [](vtkTiledRayCastVolumeMapper* m) {
-    m->SetBlendModeToMaximumIntensity();
-  }) && ok;
+  ok = Refused("too large", spx, "texture buffer",
+         [](vtkTiledRayCastVolumeMapper* m) { m->SetMaximumTextureBufferSize(1000); }) &&
+    ok;
+  ok = Refused("too large (paper)", spx, "texture",
+         [](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetMeshLayoutToPaper();
+           m->SetMaximumTextureSize(64);
+         }) &&
+    ok;
+  ok = Refused("maximum intensity", spx, "composite",
+         [](vtkTiledRayCastVolumeMapper* m) { m->SetBlendModeToMaximumIntensity(); }) &&
+    ok;
 
   // NaN scalars: a warning from the builder, and the image of the exact reference (which also
   // makes the tetrahedra that touch them transparent).

@@ -86,49 +86,57 @@ const std::map<std::string, SceneSetup>& Scenes()
 {
   static const std::map<std::string, SceneSetup> scenes = {
     { "convex",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "cube_sfepy_200k.vtu"))
           return false;
         s.View(30, 25);
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() == 1,
             "a convex mesh has one boundary layer");
         };
         return true;
       } },
     { "comb",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // An extruded comb with 6 teeth, seen across the teeth: rays enter up to 6 times.
         if (!s.Load(argc, argv, "comb6teeth_tetgen_270k.vtu", 0.2))
           return false;
         s.View(90, 10);
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 4,
             "rays across the comb's teeth re-enter the mesh several times");
         };
         return true;
       } },
     { "spx",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
         s.View(20, 30);
         return true;
       } },
     { "hollow",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // A box with a cubic cavity: every ray through the middle leaves and re-enters.
         if (!s.Load(argc, argv, "hollowcube_tetgen_230k.vtu", 0.1))
           return false;
         s.View(15, 10);
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 2,
             "rays through the cavity re-enter");
         };
         return true;
       } },
     { "bracket",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // Genus 9.
         if (!s.Load(argc, argv, "bracket_tets.vtu", 0.1))
           return false;
@@ -136,20 +144,23 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "crack",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // The LOX post split into 5 tets per hex: its periodic seam is a crack of coincident,
         // unshared faces that rays must cross without losing or doubling anything.
         if (!s.Load(argc, argv, "post_tets5_classic.vtu", 0.1))
           return false;
         s.View(0, 60);
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           return Expect(t.Mapper->GetValidationReport()->GetNumberOfCrackFaces() > 0,
             "the builder reports the seam's crack faces");
         };
         return true;
       } },
     { "cellscalars",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
         vtkNew<vtkPointDataToCellData> toCells;
@@ -162,7 +173,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "geometry",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // An opaque sphere inside the volume: rays stop at its surface.
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
@@ -183,7 +195,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "inside",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // The camera inside a convex mesh: every ray starts in the tet holding its near-plane
         // point.
         if (!s.Load(argc, argv, "cube_sfepy_200k.vtu", 0.1))
@@ -195,7 +208,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         camera->SetPosition(center);
         camera->SetViewAngle(60);
         s.Renderer->ResetCameraClippingRange();
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
           return Expect(stats->GetNumberOfNearPlaneRays() == stats->GetNumberOfRays() &&
               stats->GetNumberOfRays() == 200 * 200,
@@ -204,7 +218,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "parallel",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "bluntfin_tets.vtu", 0.1))
           return false;
         s.Renderer->GetActiveCamera()->ParallelProjectionOn();
@@ -213,7 +228,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "transformed",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // Position, orientation and a non-uniform scale on the vtkVolume.
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
@@ -225,7 +241,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "table3d",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
           return false;
         s.Mapper->SetIntegrationModeToPreIntegration3D();
@@ -237,7 +254,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "table2d",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
           return false;
         s.Mapper->SetIntegrationModeToPreIntegration2D();
@@ -249,7 +267,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "paper",
-      [](Scene& s, int argc, char* argv[]) {
+      [](Scene& s, int argc, char* argv[])
+      {
         // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
         // queries every 4 passes and 64-pixel tiles.
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
@@ -259,7 +278,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Mapper->SetOcclusionQueryInterval(4);
         s.Mapper->SetTileSize(64);
         s.View(20, 30);
-        s.Check = [](Scene& t) {
+        s.Check = [](Scene& t)
+        {
           vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
           return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
             Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&

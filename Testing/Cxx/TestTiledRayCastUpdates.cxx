@@ -97,8 +97,8 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
          "a transfer-function change uploads only the transfer function (" +
            std::to_string(Uploaded(mapper)) + " B)") &&
     ok;
-  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "new transfer function") &&
-    ok;
+  ok =
+    trctest::CheckAgainstReference(window, renderer, volume, bounds, "new transfer function") && ok;
 
   // The points move (a deforming mesh): only the points are uploaded.
   vtkPoints* points = grid->GetPoints();
@@ -120,8 +120,8 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
 
   // Everything freed, then rendered again.
   mapper->ReleaseGraphicsResources(window);
-  ok = Expect(mapper->GetStatistics()->GetTotalGPUBytes() == 0, "released: no GPU memory held") &&
-    ok;
+  ok =
+    Expect(mapper->GetStatistics()->GetTotalGPUBytes() == 0, "released: no GPU memory held") && ok;
   window->Render();
   ok = Expect(Uploaded(mapper) > 0, "after release, the mesh is uploaded again") && ok;
   ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "after release") && ok;
@@ -142,8 +142,8 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
     // maximum is widened for this image only; RMSE and the 99.9th percentile keep their bounds.
     trctest::Bounds secondWindowBounds;
     secondWindowBounds.Max = 40;
-    ok = trctest::CheckAgainstReference(window2, renderer2, volume, secondWindowBounds,
-           "second window") &&
+    ok = trctest::CheckAgainstReference(
+           window2, renderer2, volume, secondWindowBounds, "second window") &&
       ok;
     renderer2->RemoveVolume(volume);
   }
@@ -155,7 +155,6 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   mapper->SetTetsPerPass(2);
   mapper->SetTileSize(32);
   window->Render();
-  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "paper, 2 tets/pass") &&
-    ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "paper, 2 tets/pass") && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -116,8 +116,8 @@ struct Bounds
 // volume matrix, opaque depth from the window's depth buffer and background), reads the window's
 // pixels and compares. Prints the figures; returns false when a bound is exceeded. The window
 // must have been rendered.
-inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer,
-  vtkVolume* volume, const Bounds& bounds, const char* label = "image")
+inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume,
+  const Bounds& bounds, const char* label = "image")
 {
   auto* mapper = vtkTiledRayCastVolumeMapper::SafeDownCast(volume->GetMapper());
   if (!mapper)
@@ -177,7 +177,8 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
     const double alpha = rgba->GetComponent(i, 3);
     for (int c = 0; c < 3; ++c)
     {
-      const double value = rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
+      const double value =
+        rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
       composited->SetValue(3 * i + c,
         static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
     }
@@ -197,8 +198,8 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
     return false;
   }
   std::cout << label << " vs exact reference (1/255): RMSE " << stats[0] << ", 99.9th percentile "
-            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", "
-            << bounds.P999 << ", " << bounds.Max << ")\n";
+            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", " << bounds.P999
+            << ", " << bounds.Max << ")\n";
   std::cout << label << ": " << mapper->GetStatistics()->GetSummary() << "\n";
   const bool ok = stats[0] <= bounds.RMSE && stats[1] <= bounds.P999 && stats[2] <= bounds.Max;
   if (!ok)
