@@ -15,6 +15,9 @@
 #                        /usr/share/glvnd/egl_vendor.d/50_mesa.json this runs on Mesa, to try the
 #                        bundle on a machine without a GPU.
 #   OUT                  if set (the device tool sets it), images and logs are copied there.
+#   TRC_SKIP_CTEST=1     set up only (no ctest, no example), then run TRC_THEN.
+#   TRC_THEN             a command run last, in this environment (bundle libraries, EGL vendor,
+#                        TRC_BUNDLE_ROOT = the unpacked bundle), e.g. Benchmarks/run_benchmarks.sh.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bundle="$repo/.bundle"
@@ -136,14 +139,17 @@ say "the EGL window on this machine:"
   sort -u | sed 's/^/  /' || true
 
 # --- The suite ---------------------------------------------------------------------------------
+status=0
+if [ "${TRC_SKIP_CTEST:-0}" != 1 ]; then
 say "ctest (the tests labelled X need an X server and are left out)"
 set +e
 (cd "$root/build" && "$root/bin/ctest" --output-on-failure -LE '^X$' "$@")
 status=$?
 set -e
+fi
 
 # --- An example --------------------------------------------------------------------------------
-if [ "$TRC_PYTHON" = 1 ]; then
+if [ "$TRC_PYTHON" = 1 ] && [ "${TRC_SKIP_CTEST:-0}" != 1 ]; then
   say "Examples/Python/headless_render.py"
   PYTHONPATH="$root/build/lib/python3/dist-packages" "$python_exe" \
     "$repo/Examples/Python/headless_render.py" --output "$bundle/headless_render.png" || status=1
@@ -153,5 +159,10 @@ if [ -n "${OUT:-}" ] && [ -d "${OUT:-}" ]; then
   cp "$root"/build/Testing/Temporary/*.png "$root"/build/Testing/Temporary/LastTest*.log "$OUT"/ 2> /dev/null || true
   cp "$bundle/headless_render.png" "$OUT"/ 2> /dev/null || true
 fi
-say "done: ctest exit status $status"
+if [ -n "${TRC_THEN:-}" ]; then
+  export TRC_BUNDLE_ROOT="$root" TRC_PYTHON_EXE="$python_exe"
+  say "running: $TRC_THEN"
+  (cd "$repo" && eval "$TRC_THEN") || status=1
+fi
+say "done: exit status $status"
 exit "$status"

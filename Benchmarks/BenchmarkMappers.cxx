@@ -1,0 +1,534 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    BenchmarkMappers.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Speed against accuracy: renders one scene with many volume mappers in one process, same camera
+// path, transfer function and image size, and writes one CSV row per (scene, mapper, setting,
+// image size). See docs/benchmarks.md for the protocol.
+//
+//   BenchmarkMappers [options] <mesh.vtu> [<mesh.vtu> ...]
+//     --size N          image side in pixels (repeatable; default 512)
+//     --frames F        timed frames per setting, along a full turn of the camera (default 12)
+//     --csv FILE        append rows to FILE (default: standard output); a header when new
+//     --ours-only       only our default setting (the scaling runs on the dataset ladder)
+//     --sweep quick|full  our settings (default quick)
+//     --zsweep-max-tets T  ZSweep only up to T tets and 512 px (default 300000)
+//     --resample R,R,.. resampling resolutions for resample + GPU ray cast (default 64,128,256)
+//     --no-reference    skip the exact reference (error columns stay empty)
+//
+// Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own;
+// then F frames, each Render() followed by glFinish (WaitForCompletion), wall clock and GPU
+// timer; the error is measured on the first view against vtkTetReferenceRenderer's exact image.
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkGPUVolumeRayCastMapper.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderTimer.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkProjectedTetrahedraMapper.h"
+#include "vtkRenderer.h"
+#include "vtkResampleToImage.h"
+#include "vtkSmartPointer.h"
+#include "vtkTetReferenceRenderer.h"
+#include "vtkTiledRayCastStatistics.h"
+#include "vtkTiledRayCastVolumeMapper.h"
+#include "vtkTimerLog.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkUnstructuredGridPartialPreIntegration.h"
+#include "vtkUnstructuredGridVolumeRayCastMapper.h"
+#include "vtkUnstructuredGridVolumeZSweepMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+#include "vtkXMLUnstructuredGridReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+struct Options
+{
+  std::vector<int> Sizes;
+  int Frames = 12;
+  std::string Csv;
+  bool OursOnly = false;
+  bool FullSweep = false;
+  vtkIdType ZSweepMaxTets = 300000;
+  std::vector<int> Resample = { 64, 128, 256 };
+  bool Reference = true;
+  std::vector<std::string> Meshes;
+};
+
+// One CSV row; NaN = not measured (written as an empty cell).
+struct Row
+{
+  std::string Scene, Mesh, Mapper, Setting;
+  vtkIdType Tets = 0;
+  int Size = 0, Frames = 0;
+  double MedianMs = NAN, MinMs = NAN, GpuMedianMs = NAN, FirstFrameMs = NAN, ResampleMs = NAN,
+         TetsPerS = NAN, GpuBytesPerTet = NAN, Rmse = NAN, P999 = NAN, MaxErr = NAN,
+         LostPixels = NAN, Layers = NAN, MedianPasses = NAN, MaxPasses = NAN;
+};
+
+const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
+                     "gpu_median_ms,first_frame_ms,resample_ms,tets_per_s,gpu_bytes_per_tet,"
+                     "rmse,p999,max_err,lost_pixels,layers,median_passes_per_tile,"
+                     "max_passes_per_tile";
+
+std::string Cell(double v)
+{
+  if (std::isnan(v))
+  {
+    return "";
+  }
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+void WriteRow(std::ostream& os, const Row& r)
+{
+  os << r.Scene << "," << r.Mesh << "," << r.Tets << "," << r.Size << "," << r.Mapper << ","
+     << r.Setting << "," << r.Frames << "," << Cell(r.MedianMs) << "," << Cell(r.MinMs) << ","
+     << Cell(r.GpuMedianMs) << "," << Cell(r.FirstFrameMs) << "," << Cell(r.ResampleMs) << ","
+     << Cell(r.TetsPerS) << "," << Cell(r.GpuBytesPerTet) << "," << Cell(r.Rmse) << ","
+     << Cell(r.P999) << "," << Cell(r.MaxErr) << "," << Cell(r.LostPixels) << ","
+     << Cell(r.Layers) << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "\n";
+}
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return NAN;
+  }
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The transfer function of every benchmark: a four-node colour ramp and an opacity ramp over the
+// scalar range, unit distance 1/20 of the bounding-box diagonal (the scenes of the tests).
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkDataSet* grid)
+{
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  const double lo = range[0], hi = range[1];
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(lo, 0.1, 0.3, 1.0);
+  color->AddRGBPoint(lo + 0.4 * (hi - lo), 0.2, 0.9, 0.4);
+  color->AddRGBPoint(lo + 0.7 * (hi - lo), 1.0, 0.9, 0.1);
+  color->AddRGBPoint(hi, 1.0, 0.2, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(lo, 0.05);
+  opacity->AddPoint(lo + 0.5 * (hi - lo), 0.3);
+  opacity->AddPoint(hi, 0.6);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(0.05 * grid->GetLength());
+  return property;
+}
+
+// View i of the camera path: VTK's ResetCamera, then an elevation of 20 degrees and a turn.
+void SetView(vtkRenderer* renderer, vtkDataSet* grid, int i, int frames)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 0, 1);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  renderer->ResetCamera(grid->GetBounds());
+  camera->Azimuth(30.0 + 360.0 * i / std::max(1, frames));
+  camera->Elevation(20);
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(1.2);
+  renderer->ResetCameraClippingRange(grid->GetBounds());
+}
+
+// The window's pixels as RGB bytes.
+std::vector<unsigned char> ReadPixels(vtkRenderWindow* window, int size)
+{
+  vtkNew<vtkUnsignedCharArray> pixels;
+  window->GetPixelData(0, 0, size - 1, size - 1, 0, pixels, 0);
+  return std::vector<unsigned char>(pixels->GetPointer(0), pixels->GetPointer(0) + 3 * size * size);
+}
+
+struct Error
+{
+  double Rmse, P999, Max, Lost;
+};
+
+// Against the reference: RMSE, 99.9th percentile and maximum of the per-channel differences in
+// 1/255, and pixels whose difference exceeds 32/255 in some channel (a ray lost or cut short).
+Error Compare(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
+{
+  std::vector<int> d(a.size());
+  double sum = 0;
+  double lost = 0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    d[i] = std::abs(int(a[i]) - int(b[i]));
+    sum += double(d[i]) * d[i];
+  }
+  for (size_t p = 0; p + 2 < a.size(); p += 3)
+  {
+    lost += (d[p] > 32 || d[p + 1] > 32 || d[p + 2] > 32) ? 1 : 0;
+  }
+  std::vector<int> sorted = d;
+  const size_t k = std::min(sorted.size() - 1, static_cast<size_t>(0.999 * sorted.size()));
+  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+  const double p999 = sorted[k];
+  const double mx = *std::max_element(d.begin(), d.end());
+  return { std::sqrt(sum / d.size()), p999, mx, lost };
+}
+
+// A setting: a name, a mapper family, and how to make its mapper (and, for resampling, the
+// time it took).
+struct Setting
+{
+  std::string Mapper, Name;
+  std::function<vtkSmartPointer<vtkAbstractVolumeMapper>(double& prepareMs)> Make;
+};
+
+std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
+{
+  std::vector<Setting> settings;
+  auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table) {
+    settings.push_back({ "ours", name, [=](double&) {
+                          auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
+                          m->SetInputData(grid);
+                          m->SetIntegrationMode(mode);
+                          m->SetMeshLayout(layout);
+                          m->SetTetsPerPass(n);
+                          m->SetTileSize(tile);
+                          if (table > 0)
+                          {
+                            m->SetPreIntegrationTableScalarSize(table);
+                            m->SetPreIntegrationTableLengthSize(table / 2);
+                          }
+                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+                        } });
+  };
+  using M = vtkTiledRayCastVolumeMapper;
+  ours("partial compact N0 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 128, 0);
+  if (o.OursOnly)
+  {
+    return settings;
+  }
+  ours("partial compact N0 T64", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 64, 0);
+  ours("partial compact N0 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 256, 0);
+  ours("partial compact N16 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 16, 128, 0);
+  ours("partial paper N0 T128", M::PARTIAL_PRE_INTEGRATION, M::PAPER_LAYOUT, 0, 128, 0);
+  ours("table3d compact N0 T128", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 128, 0);
+  ours("table2d compact N0 T128", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 128, 0);
+  if (o.FullSweep)
+  {
+    ours("partial compact N4 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 4, 128, 0);
+    ours("partial compact N64 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 64, 128, 0);
+    ours("partial compact N0 T32", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 32, 0);
+    ours("partial compact N0 Tall", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 0, 0);
+    ours("table3d64 compact N0 T128", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 128, 64);
+    ours("table2d64 compact N0 T128", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 128, 64);
+  }
+
+  settings.push_back({ "projected_tetrahedra", "default", [=](double&) {
+                        auto m = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
+                        m->SetInputData(grid);
+                        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+                      } });
+  settings.push_back({ "bunyk_raycast", "partial preintegration", [=](double&) {
+                        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
+                        m->SetInputData(grid);
+                        vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
+                        m->SetRayIntegrator(integrator);
+                        m->AutoAdjustSampleDistancesOff();
+                        m->SetImageSampleDistance(1.0f);
+                        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+                      } });
+  if (grid->GetNumberOfCells() <= o.ZSweepMaxTets && size <= 512)
+  {
+    settings.push_back({ "zsweep", "default", [=](double&) {
+                          auto m = vtkSmartPointer<vtkUnstructuredGridVolumeZSweepMapper>::New();
+                          m->SetInputData(grid);
+                          m->AutoAdjustSampleDistancesOff();
+                          m->SetImageSampleDistance(1.0f);
+                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+                        } });
+  }
+  for (int r : o.Resample)
+  {
+    settings.push_back({ "resample_gpu", "res" + std::to_string(r), [=](double& prepareMs) {
+                          // What ParaView users do instead: resample to a regular grid (points
+                          // outside the mesh are masked out) and use VTK's GPU ray caster.
+                          vtkNew<vtkTimerLog> timer;
+                          timer->StartTimer();
+                          vtkNew<vtkResampleToImage> resample;
+                          resample->SetInputDataObject(grid);
+                          resample->SetSamplingDimensions(r, r, r);
+                          resample->UseInputBoundsOn();
+                          resample->Update();
+                          timer->StopTimer();
+                          prepareMs = 1000.0 * timer->GetElapsedTime();
+                          vtkImageData* image = resample->GetOutput();
+                          auto volumeImage = vtkSmartPointer<vtkImageData>::New();
+                          volumeImage->ShallowCopy(image);
+                          auto mask = vtkSmartPointer<vtkImageData>::New();
+                          mask->CopyStructure(image);
+                          vtkDataArray* valid =
+                            image->GetPointData()->GetArray(resample->GetMaskArrayName());
+                          vtkNew<vtkUnsignedCharArray> maskValues;
+                          maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
+                          for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
+                          {
+                            maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
+                          }
+                          mask->GetPointData()->SetScalars(maskValues);
+                          auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+                          m->SetInputData(volumeImage);
+                          m->SetMaskInput(mask);
+                          m->SetMaskTypeToBinary();
+                          m->AutoAdjustSampleDistancesOff();
+                          double spacing[3];
+                          volumeImage->GetSpacing(spacing);
+                          m->SetSampleDistance(
+                            0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
+                          // The mask and image are kept alive by the mapper.
+                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+                        } });
+  }
+  return settings;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    auto next = [&]() -> std::string { return i + 1 < argc ? argv[++i] : ""; };
+    if (a == "--size")
+      o.Sizes.push_back(std::max(16, atoi(next().c_str())));
+    else if (a == "--frames")
+      o.Frames = std::max(1, atoi(next().c_str()));
+    else if (a == "--csv")
+      o.Csv = next();
+    else if (a == "--ours-only")
+      o.OursOnly = true;
+    else if (a == "--sweep")
+      o.FullSweep = next() == "full";
+    else if (a == "--zsweep-max-tets")
+      o.ZSweepMaxTets = atoll(next().c_str());
+    else if (a == "--resample")
+    {
+      o.Resample.clear();
+      std::stringstream list(next());
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        o.Resample.push_back(atoi(item.c_str()));
+      }
+    }
+    else if (a == "--no-reference")
+      o.Reference = false;
+    else if (!a.empty() && a[0] == '-')
+    {
+      std::cerr << "unknown option " << a << "\n";
+      return EXIT_FAILURE;
+    }
+    else
+      o.Meshes.push_back(a);
+  }
+  if (o.Meshes.empty())
+  {
+    std::cerr << "usage: " << argv[0] << " [options] <mesh.vtu> ... (see the source's header)\n";
+    return EXIT_FAILURE;
+  }
+  if (o.Sizes.empty())
+  {
+    o.Sizes.push_back(512);
+  }
+
+  std::ofstream file;
+  std::ostream* out = &std::cout;
+  if (!o.Csv.empty())
+  {
+    const bool exists = std::ifstream(o.Csv).good();
+    file.open(o.Csv, std::ios::app);
+    out = &file;
+    if (!exists)
+    {
+      file << Header << "\n";
+    }
+  }
+  else
+  {
+    std::cout << Header << "\n";
+  }
+
+  for (const std::string& path : o.Meshes)
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    if (grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
+    {
+      std::cerr << path << ": no cells or no point scalars; skipped\n";
+      continue;
+    }
+    std::string mesh = path.substr(path.find_last_of('/') + 1);
+    const std::string scene = mesh.substr(0, mesh.find('.'));
+    vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(grid);
+
+    for (int size : o.Sizes)
+    {
+      vtkNew<vtkRenderer> renderer;
+      renderer->SetBackground(0, 0, 0);
+      vtkNew<vtkRenderWindow> window;
+      window->SetOffScreenRendering(1);
+      window->SetMultiSamples(0);
+      window->SetSize(size, size);
+      window->AddRenderer(renderer);
+      window->Render();
+      auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
+
+      // The exact image of the first view.
+      std::vector<unsigned char> reference;
+      if (o.Reference)
+      {
+        SetView(renderer, grid, 0, o.Frames);
+        vtkNew<vtkTetReferenceRenderer> exact;
+        exact->SetInputData(grid);
+        exact->SetVolumeProperty(property);
+        exact->SetCamera(renderer->GetActiveCamera());
+        exact->SetImageSize(size, size);
+        vtkNew<vtkTimerLog> timer;
+        timer->StartTimer();
+        exact->Render();
+        timer->StopTimer();
+        vtkNew<vtkImageData> image;
+        const double background[3] = { 0, 0, 0 };
+        vtkTetReferenceRenderer::ConvertToUnsignedChar(exact->GetOutput(), background, image);
+        auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+        reference.assign(scalars->GetPointer(0), scalars->GetPointer(0) + 3 * size * size);
+        std::cerr << scene << " " << size << "^2: exact reference in " << timer->GetElapsedTime()
+                  << " s\n";
+      }
+
+      for (const Setting& setting : MakeSettings(grid, o, size))
+      {
+        Row row;
+        row.Scene = scene;
+        row.Mesh = mesh;
+        row.Tets = grid->GetNumberOfCells();
+        row.Size = size;
+        row.Mapper = setting.Mapper;
+        row.Setting = setting.Name;
+        row.Frames = o.Frames;
+
+        double prepareMs = NAN;
+        vtkSmartPointer<vtkAbstractVolumeMapper> mapper = setting.Make(prepareMs);
+        row.ResampleMs = prepareMs;
+        vtkNew<vtkVolume> volume;
+        volume->SetMapper(mapper);
+        volume->SetProperty(property);
+        renderer->AddVolume(volume);
+
+        // First frame: everything the mapper prepares.
+        SetView(renderer, grid, 0, o.Frames);
+        vtkNew<vtkTimerLog> timer;
+        timer->StartTimer();
+        window->Render();
+        window->WaitForCompletion();
+        timer->StopTimer();
+        row.FirstFrameMs = 1000.0 * timer->GetElapsedTime();
+
+        if (!reference.empty())
+        {
+          window->Render();
+          const Error e = Compare(ReadPixels(window, size), reference);
+          row.Rmse = e.Rmse;
+          row.P999 = e.P999;
+          row.MaxErr = e.Max;
+          row.LostPixels = e.Lost;
+        }
+
+        std::vector<double> wall, gpu;
+        vtkOpenGLRenderTimer timerObject; // not a vtkObject
+        vtkOpenGLRenderTimer* gpuTimer = &timerObject;
+        for (int f = 0; f < o.Frames; ++f)
+        {
+          SetView(renderer, grid, f, o.Frames);
+          timer->StartTimer();
+          gpuTimer->Reset();
+          gpuTimer->Start();
+          window->Render();
+          gpuTimer->Stop();
+          window->WaitForCompletion();
+          timer->StopTimer();
+          wall.push_back(1000.0 * timer->GetElapsedTime());
+          if (gpuTimer->Ready())
+          {
+            gpu.push_back(gpuTimer->GetElapsedMilliseconds());
+          }
+        }
+        gpuTimer->ReleaseGraphicsResources();
+        row.MedianMs = Median(wall);
+        row.MinMs = *std::min_element(wall.begin(), wall.end());
+        row.GpuMedianMs = Median(gpu);
+        row.TetsPerS = row.Tets / (row.MedianMs / 1000.0);
+
+        if (auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper))
+        {
+          vtkTiledRayCastStatistics* stats = ours->GetStatistics();
+          row.GpuBytesPerTet = double(stats->GetTotalGPUBytes()) / row.Tets;
+          row.Layers = stats->GetNumberOfLayers();
+          row.MedianPasses = stats->GetMedianPassesPerTile();
+          row.MaxPasses = stats->GetMaximumPassesPerTile();
+          if (!stats->GetRendered())
+          {
+            std::cerr << scene << " " << setting.Name << ": nothing rendered\n";
+          }
+        }
+        else if (setting.Mapper == "resample_gpu")
+        {
+          const int r = atoi(setting.Name.c_str() + 3);
+          row.GpuBytesPerTet = (4.0 + 1.0) * r * r * r / row.Tets; // float scalars + mask
+        }
+        WriteRow(*out, row);
+        out->flush();
+        std::cerr << scene << " " << size << "^2 " << setting.Mapper << " [" << setting.Name
+                  << "]: median " << row.MedianMs << " ms, first " << row.FirstFrameMs
+                  << " ms, RMSE " << row.Rmse << "\n";
+
+        renderer->RemoveVolume(volume); // releases its graphics resources
+        (void)glWindow;
+      }
+    }
+  }
+  return EXIT_SUCCESS;
+}

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The benchmark of docs/benchmarks.md, in one command: every mapper on the chosen meshes (CSV),
+# then the charts. On the build machine (llvmpipe):
+#   Benchmarks/run_benchmarks.sh cpu <output dir>
+# On the GPU machine, through the bundle (Module/bundle-gpu.sh, then on the device):
+#   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
+# "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+kind="${1:?cpu, gpu or ladder}"
+out="${2:?output directory}"
+mkdir -p "$out"
+build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
+build="${build:-${TRC_BUILD_DIR:-$here/build}}"
+python="${TRC_PYTHON_EXE:-/usr/bin/python3}"
+bench="$build/Benchmarks/BenchmarkMappers"
+meshes="$here/Testing/Data/Meshes"
+unset DISPLAY
+
+case "$kind" in
+  cpu)
+    # llvmpipe on 2 cores: small images, the smaller meshes.
+    "$bench" --size 512 --frames 6 --csv "$out/results.csv" \
+      "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/comb6teeth_tetgen_270k.vtu"
+    suffix=", llvmpipe (CPU)"
+    ;;
+  gpu)
+    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    "$bench" --size 1024 --frames 10 --csv "$out/results.csv" \
+      "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
+    suffix=", GPU"
+    ;;
+  ladder)
+    # torus_10m and torus_30m take minutes to mesh (docs/datasets.md): not in this run.
+    rungs="${TRC_LADDER_RUNGS:-wavelet_300k wavelet_1m wavelet_3m wavelet_10m wavelet_30m torus_300k torus_1m torus_3m}"
+    "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' $rungs) \
+      --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    for f in "$out"/ladder/*.vtu; do
+      "$bench" --ours-only --no-reference --size 1024 --frames 10 --csv "$out/ladder.csv" "$f"
+      rm -f "$f"
+    done
+    suffix=", GPU"
+    ;;
+esac
+for csv in "$out"/results.csv "$out"/ladder.csv; do
+  [ -f "$csv" ] || continue
+  PYTHONPATH="$build/lib/python3/dist-packages" "$python" "$here/Benchmarks/plot_benchmarks.py" \
+    "$csv" --output-dir "$out/charts" --title-suffix "$suffix" || echo "charts failed for $csv"
+done
