@@ -48,6 +48,8 @@ mkdir -p "$root/build" "$root/lib" "$root/bin"
   find . -name CMakeFiles -prune -o -name CTestTestfile.cmake -print
   [ -f DartConfiguration.tcl ] && echo ./DartConfiguration.tcl
   [ -d bin ] && find bin -type f
+  # The benchmark programs (docs/benchmarks.md), which the GPU runs too.
+  [ -d Benchmarks ] && find Benchmarks -maxdepth 1 -type f -perm -u+x
   find lib \( -type f -o -type l \) \( -name '*.so*' -o -name '*.py' -o -name '*.cmake' \)
 ) | tar -C "$build" -cf - -T - | tar -C "$root/build" -xf -
 mkdir -p "$root/build/Testing/Temporary"
