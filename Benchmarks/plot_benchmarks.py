@@ -239,12 +239,23 @@ def plot_scaling(rows, size, suffix, default_setting, path):
     chart = make_chart("Frame time against mesh size, %s%s" % (size_text(size), suffix),
                        "Tetrahedra", "Median frame time (ms)",
                        [r["tets"] for r in points], [r["median_ms"] for r in points])
+    markers = [vtkPlotPoints.CIRCLE, vtkPlotPoints.SQUARE, vtkPlotPoints.DIAMOND,
+               vtkPlotPoints.PLUS, vtkPlotPoints.CROSS]
     for mapper, chosen in series:
         name, colour, marker = family(mapper)
         if mapper == "ours":
             name += ": " + default_setting
-        add_series(chart, [r["tets"] for r in chosen], [r["median_ms"] for r in chosen],
-                   name, colour, marker, line=len(chosen) > 1)  # one point: no line
+        # Dataset-ladder rungs (wavelet_1m, torus_3m, ...): one line per mesh family, since
+        # frame time depends on the shape as much as on the size.
+        groups = {}
+        for r in chosen:
+            match = re.match(r"^([A-Za-z]+)_\d+[km]$", r["scene"])
+            groups.setdefault(match.group(1) if match else "", []).append(r)
+        for i, (group, members) in enumerate(sorted(groups.items())):
+            add_series(chart, [r["tets"] for r in members], [r["median_ms"] for r in members],
+                       name + (" (%s)" % group if group else ""), colour,
+                       markers[i % len(markers)] if group else marker,
+                       line=len(members) > 1)  # one point: no line
     save_chart(chart, path)
     return True
 

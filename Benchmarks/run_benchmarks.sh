@@ -21,15 +21,15 @@ case "$kind" in
   cpu)
     # llvmpipe on 2 cores: small images, the smaller meshes.
     "$bench" --size 512 --frames 6 --csv "$out/results.csv" \
-      "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/comb6teeth_tetgen_270k.vtu"
-    suffix=", llvmpipe (CPU)"
+      "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu"
+    suffix="llvmpipe (CPU)"
     ;;
   gpu)
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
     "$bench" --size 1024 --frames 10 --csv "$out/results.csv" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
-    suffix=", GPU"
+    suffix="GPU"
     ;;
   ladder)
     # torus_10m and torus_30m take minutes to mesh (docs/datasets.md): not in this run.
@@ -40,7 +40,7 @@ case "$kind" in
       "$bench" --ours-only --no-reference --size 1024 --frames 10 --csv "$out/ladder.csv" "$f"
       rm -f "$f"
     done
-    suffix=", GPU"
+    suffix="GPU"
     ;;
 esac
 for csv in "$out"/results.csv "$out"/ladder.csv; do
