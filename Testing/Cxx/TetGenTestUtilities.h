@@ -15,6 +15,8 @@
 #ifndef TetGenTestUtilities_h
 #define TetGenTestUtilities_h
 
+#include "TiledRayCastTestCheck.h" // For TRC_CHECK
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -40,15 +42,6 @@
 #include <utility>
 #include <vector>
 
-#define TRC_CHECK(cond)                                                                            \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (false)
 
 namespace trc_tetgen_test
 {

@@ -14,6 +14,8 @@
 #ifndef TetMeshTestUtilities_h
 #define TetMeshTestUtilities_h
 
+#include "TiledRayCastTestCheck.h" // For TRC_CHECK
+
 #include "vtkCellArray.h"
 #include "vtkCellType.h"
 #include "vtkDataSet.h"
@@ -37,15 +39,6 @@
 #include <string>
 #include <vector>
 
-#define TRC_CHECK(cond)                                                                            \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (false)
 
 // Runs a check that returns an error string.
 #define TRC_CHECK_EMPTY(expr)                                                                      \

@@ -14,6 +14,8 @@
 #ifndef TetReferenceTestUtilities_h
 #define TetReferenceTestUtilities_h
 
+#include "TiledRayCastTestCheck.h" // For TRC_CHECK
+
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -37,15 +39,6 @@
 #include <iostream>
 #include <vector>
 
-#define TRC_CHECK(cond)                                                                            \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (false)
 
 // Checks |value - expected| <= bound and prints both on failure.
 #define TRC_CHECK_NEAR(value, expected, bound)                                                     \
