@@ -19,9 +19,13 @@ unset DISPLAY
 
 case "$kind" in
   cpu)
-    # llvmpipe on 2 cores: small images, the smaller meshes.
+    # llvmpipe on 2 cores: 512², the meshes of the GPU run and spx. ZSweep only up to 300k tets;
+    # on the 1M-tet torus fewer frames and no 256³ resampling (minutes each on 2 cores).
     "$bench" --size 512 --frames 6 --csv "$out/results.csv" \
-      "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu"
+      "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu"
+    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    "$bench" --size 512 --frames 4 --resample 64,128 --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
     suffix="llvmpipe (CPU)"
     ;;
   gpu)
