@@ -72,6 +72,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -404,6 +405,8 @@ public:
   vtkShaderProgram* Use(vtkOpenGLRenderWindow* window, Program& program);
   void SetFrameUniforms(vtkShaderProgram* program);
   void SetMeshUniforms(vtkShaderProgram* program);
+  // Uniforms of the boundary-face passes: exact coverage of pixel centres (see the vertex shader).
+  void SetCoverageUniforms(vtkShaderProgram* program);
   void SetIntegrationUniforms(vtkShaderProgram* program);
   void SetTargetUniforms(vtkShaderProgram* program, int parity);
   void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
@@ -840,10 +843,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
                               "uniform sampler2D in_previousColor;\n"
                               "uniform sampler2D in_previousEntry;\n"
                               "uniform float in_peelEpsilon;\n";
+  // Most fragments of a peel belong to pixels whose ray is not waiting: they leave first.
+  const std::string peelEarly = "ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
+                                "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
+                                "  if (trcStatus(previous) != TRC_WAITING)\n"
+                                "  {\n    discard;\n  }\n";
   const std::string peelImpl =
-    "ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
-    "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
-    "  if (trcStatus(previous) != TRC_WAITING || lambda < previous.y - in_peelEpsilon)\n"
+    "if (lambda < previous.y - in_peelEpsilon)\n"
     "  {\n    discard;\n  }\n"
     "  vec4 lastEntry = texelFetch(in_previousEntry, pixel, 0);\n"
     "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= trcEntryKey(lastEntry))\n"
@@ -875,6 +881,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
   {
     std::vector<std::pair<std::string, std::string>> replacements = common;
     replacements.emplace_back("//TRC::Peel::Dec", spec.Peel ? peelDec : std::string());
+    replacements.emplace_back("//TRC::Peel::Early", spec.Peel ? peelEarly : std::string());
     replacements.emplace_back("//TRC::Peel::Impl", spec.Peel ? peelImpl : std::string());
     const std::string vs = Substituted(spec.VS, replacements);
     const std::string fs = Substituted(spec.FS, replacements);
@@ -1358,6 +1365,19 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShader
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetCoverageUniforms(vtkShaderProgram* p)
+{
+  // Pixel centres are tested against the faces' corners in float pixel coordinates, whose
+  // rounding grows with the viewport: the tolerance covers it (a few units in the last place).
+  // The dilation covers the rasteriser's snapping of corners (1/256 px on current GPUs and on
+  // llvmpipe) and the tolerance, with a margin.
+  const float extent = static_cast<float>(std::max(this->ImageSize[0], this->ImageSize[1]));
+  const float tolerance = 8.0f * extent * std::numeric_limits<float>::epsilon();
+  p->SetUniformf("in_coverageTolerance", tolerance);
+  p->SetUniformf("in_coverageDilation", 1.0f / 64.0f + tolerance);
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderProgram* p)
 {
   for (MeshTexture* t : this->MeshTextures)
@@ -1485,6 +1505,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
   state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
   this->SetFrameUniforms(this->Use(window, this->FirstHitProgram));
   this->SetMeshUniforms(this->FirstHitProgram.Shader);
+  this->SetCoverageUniforms(this->FirstHitProgram.Shader);
   this->FirstHitProgram.VAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
   vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
@@ -1512,6 +1533,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   vtkShaderProgram* p = this->Use(window, this->PeelProgram);
   this->SetFrameUniforms(p);
   this->SetMeshUniforms(p);
+  this->SetCoverageUniforms(p);
   p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
   p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
   p->SetUniformi("in_previousColor", this->Color[0]->GetTextureUnit());

@@ -558,6 +558,7 @@ public:
   void SortSpatially();
   bool OrientAndClassify(double tolerance, bool allowFlips);
   void MatchFaces();
+  void OrientDegenerateTetrahedra();
   void CollectBoundaryFaces();
   void FindDuplicatesAndCracks();
   bool ReadScalars(vtkDataSet* input, vtkTetMeshBuilder* self, std::string& error);
@@ -1235,6 +1236,84 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
 }
 
 //------------------------------------------------------------------------------
+// A degenerate tetrahedron's volume says nothing about its orientation, yet its faces are
+// rasterised as boundary faces (culled by orientation) and a ray's exit is chosen by their
+// outward normals: a flat tetrahedron on the boundary kept in its input order can face
+// inwards and leave a hole. Its neighbours say which way it faces: across a shared face, two
+// consistently oriented tetrahedra see opposite parities. So each degenerate tetrahedron
+// takes the orientation of its first oriented neighbour (p2 <-> p3, which swaps faces 2 and
+// 3), breadth first through chains of degenerate ones. Not counted as inverted: the
+// validation report's inverted count is about the input's signed volumes.
+void vtkTetMeshBuilder::vtkInternals::OrientDegenerateTetrahedra()
+{
+  vtkTetMesh* mesh = this->Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const uint8_t* flags = mesh->TetFlags.data();
+  std::vector<uint32_t> pending;
+  for (vtkIdType t = 0; t < numTets; ++t)
+  {
+    if (flags[t] & vtkTetMesh::Degenerate)
+    {
+      pending.push_back(static_cast<uint32_t>(t));
+    }
+  }
+  if (pending.empty())
+  {
+    return;
+  }
+  uint32_t* tp = mesh->TetPoints.data();
+  uint32_t* neighbors = mesh->TetNeighbors.data();
+  std::vector<bool> oriented(static_cast<size_t>(numTets), true);
+  for (uint32_t t : pending)
+  {
+    oriented[t] = false;
+  }
+  // Rounds until no degenerate tetrahedron next to an oriented one is left (chains of
+  // degenerate tetrahedra are short: each round orients the next link).
+  bool progress = true;
+  while (progress && !pending.empty())
+  {
+    progress = false;
+    std::vector<uint32_t> left;
+    for (uint32_t t : pending)
+    {
+      int reference = -1;
+      for (int f = 0; f < 4 && reference < 0; ++f)
+      {
+        const uint32_t other = neighbors[4 * static_cast<size_t>(t) + f];
+        if (other != NoNeighbor && oriented[other >> 2])
+        {
+          reference = f;
+        }
+      }
+      if (reference < 0)
+      {
+        left.push_back(t);
+        continue;
+      }
+      const uint32_t face = (t << 2) | static_cast<uint32_t>(reference);
+      if (FaceParity(tp, face) == FaceParity(tp, neighbors[face]))
+      {
+        uint32_t* ids = tp + 4 * static_cast<size_t>(t);
+        std::swap(ids[2], ids[3]);
+        uint32_t* own = neighbors + 4 * static_cast<size_t>(t);
+        std::swap(own[2], own[3]);
+        for (uint32_t f = 2; f < 4; ++f)
+        {
+          if (own[f] != NoNeighbor)
+          {
+            neighbors[own[f]] = (t << 2) | f;
+          }
+        }
+      }
+      oriented[t] = true;
+      progress = true;
+    }
+    pending.swap(left);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
 {
   vtkTetMesh* mesh = this->Mesh;
@@ -1900,6 +1979,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
       {
         ScopedEvent event("vtkTetMeshBuilder: face matching");
         in.MatchFaces();
+        in.OrientDegenerateTetrahedra();
         in.CollectBoundaryFaces();
       }
       {

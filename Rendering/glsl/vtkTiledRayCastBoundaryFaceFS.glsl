@@ -19,6 +19,29 @@
 
 flat in uint ip_tet;
 flat in int ip_face;
+flat in vec2 ip_corner0;
+flat in vec2 ip_corner1;
+flat in vec2 ip_corner2;
+flat in int ip_testCoverage;
+// Pixels: how far outside an edge a pixel centre may lie and still be covered (more than
+// the rounding of the corners' positions, so that faces sharing an edge leave no gap).
+uniform float in_coverageTolerance;
+
+// Whether the pixel centre lies in the face, tested against the unsnapped corners (the
+// vertex shader grew the face so that every such pixel gets a fragment).
+bool trcCovers(vec2 q)
+{
+  vec2 e0 = ip_corner1 - ip_corner0;
+  vec2 e1 = ip_corner2 - ip_corner1;
+  vec2 e2 = ip_corner0 - ip_corner2;
+  float side = e0.x * e1.y - e0.y * e1.x > 0.0 ? 1.0 : -1.0;
+  vec3 distance = side *
+    vec3(e0.x * (q.y - ip_corner0.y) - e0.y * (q.x - ip_corner0.x),
+      e1.x * (q.y - ip_corner1.y) - e1.y * (q.x - ip_corner1.x),
+      e2.x * (q.y - ip_corner2.y) - e2.y * (q.x - ip_corner2.x));
+  vec3 lengths = vec3(length(e0), length(e1), length(e2));
+  return all(greaterThanEqual(distance, -in_coverageTolerance * lengths));
+}
 
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
@@ -26,6 +49,11 @@ layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {
+  //TRC::Peel::Early
+  if (ip_testCoverage != 0 && !trcCovers(gl_FragCoord.xy))
+  {
+    discard;
+  }
   TrcRay ray = trcPixelRay(gl_FragCoord.xy);
   vec3 p[4];
   vec3 n[4];
@@ -33,14 +61,16 @@ void main()
   trcLoadTet(ip_tet, p, n, field);
   vec3 a = p[trcFacePoints[ip_face].x];
   float den = dot(n[ip_face], ray.dir);
-  // Where the ray crosses the face's plane. The rasteriser says the pixel is
-  // on the face; at grazing angles the division is unreliable, so fall back to
-  // the rasterised depth, which is what placed the fragment here.
+  // Where the ray crosses the face's plane. At grazing angles the division is
+  // unreliable: there the rasterised depth, which placed the fragment here, is
+  // used unless the two agree. (Not at other angles: the depth of a grown face
+  // is interpolated between moved corners and is off where the face was grown.)
   float lambda = trcLambdaFromWindowDepth(ray, gl_FragCoord.z);
   if (den < 0.0)
   {
     float exact = dot(a - ray.origin, n[ip_face]) / den;
-    if (abs(exact - lambda) < 1e-3 * (1.0 + abs(lambda)))
+    bool grazing = -den < 1e-4 * length(n[ip_face]) * length(ray.dir);
+    if (!grazing || abs(exact - lambda) < 1e-3 * (1.0 + abs(lambda)))
     {
       lambda = exact;
     }

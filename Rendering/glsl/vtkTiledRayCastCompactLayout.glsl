@@ -9,10 +9,14 @@ uniform usamplerBuffer in_TetNeighbors;
 uniform samplerBuffer in_Points;
 //TRC::CellScalars::Dec
 
-vec3 trcTetPoint(uint tet, int i)
+// The four points of a tet (its point ids, then the points).
+void trcTetPoints(uint tet, out vec3 p[4])
 {
-  uint id = texelFetch(in_TetPoints, int(tet))[i];
-  return texelFetch(in_Points, int(id)).xyz;
+  uvec4 ids = texelFetch(in_TetPoints, int(tet));
+  p[0] = texelFetch(in_Points, int(ids.x)).xyz;
+  p[1] = texelFetch(in_Points, int(ids.y)).xyz;
+  p[2] = texelFetch(in_Points, int(ids.z)).xyz;
+  p[3] = texelFetch(in_Points, int(ids.w)).xyz;
 }
 
 // Points, outward face normals (not normalised) and the scalar field

@@ -47,11 +47,11 @@ void main()
 {
   uint tet = ip_vertexTet[0];
   vec3 p[4];
+  trcTetPoints(tet, p);
   float d[4];
   int below = 0;
   for (int i = 0; i < 4; ++i)
   {
-    p[i] = trcTetPoint(tet, i);
     d[i] = dot(in_nearPlane.xyz, p[i]) + in_nearPlane.w;
     below += d[i] < 0.0 ? 1 : 0;
   }

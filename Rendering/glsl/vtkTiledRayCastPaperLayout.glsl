@@ -20,15 +20,17 @@ ivec2 trcPaperTexel(uint tet)
   return ivec2(t % in_paperWidth, 3 * (t / in_paperWidth));
 }
 
-vec3 trcTetPoint(uint tet, int i)
+// The four points of a tet (three texels).
+void trcTetPoints(uint tet, out vec3 p[4])
 {
   ivec2 c = trcPaperTexel(tet);
-  if (i < 3)
-  {
-    return texelFetch(in_Vertices, c + ivec2(0, i), 0).xyz;
-  }
-  return vec3(texelFetch(in_Vertices, c, 0).w, texelFetch(in_Vertices, c + ivec2(0, 1), 0).w,
-    texelFetch(in_Vertices, c + ivec2(0, 2), 0).w);
+  vec4 v0 = texelFetch(in_Vertices, c, 0);
+  vec4 v1 = texelFetch(in_Vertices, c + ivec2(0, 1), 0);
+  vec4 v2 = texelFetch(in_Vertices, c + ivec2(0, 2), 0);
+  p[0] = v0.xyz;
+  p[1] = v1.xyz;
+  p[2] = v2.xyz;
+  p[3] = vec3(v0.w, v1.w, v2.w);
 }
 
 void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)

@@ -72,7 +72,11 @@ void main()
     }
 
     // The exit face: the nearest plane the ray leaves through, never the entry face.
-    float exitLambda = 3.4e38;
+    // Distances are measured from the ray's current point, next to the tet, not from its
+    // origin on the near plane: in a flat tet, planes a few float steps apart at lambda ~ 0.5
+    // are then told apart (the wrong one skips a tet).
+    vec3 here = ray.origin + lambda * ray.dir;
+    float exitStep = 3.4e38;
     int exitFace = -1;
     float steepest = -3.4e38;
     int steepestFace = 0;
@@ -90,10 +94,10 @@ void main()
       }
       if (den > 0.0)
       {
-        float l = dot(p[trcFacePoints[f].x] - ray.origin, n[f]) / den;
-        if (l < exitLambda)
+        float step = dot(p[trcFacePoints[f].x] - here, n[f]) / den;
+        if (step < exitStep)
         {
-          exitLambda = l;
+          exitStep = step;
           exitFace = f;
         }
       }
@@ -103,9 +107,9 @@ void main()
       // No face faces away from the ray (a degenerate tet, or a ray inside a
       // face's plane): leave through the most favourable face without moving.
       exitFace = steepestFace;
-      exitLambda = lambda;
+      exitStep = 0.0;
     }
-    exitLambda = max(exitLambda, lambda);
+    float exitLambda = lambda + max(exitStep, 0.0);
     stalls = exitLambda > lambda ? 0 : stalls + 1;
 
     bool stopped = exitLambda >= ray.lambdaMax;

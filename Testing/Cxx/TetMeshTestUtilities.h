@@ -163,6 +163,32 @@ inline std::string CheckOrientation(vtkTetMesh* mesh)
       }
     }
   }
+  // Neighbours see their shared face in opposite orders (the same outward side from both),
+  // degenerate tetrahedra included: their volume cannot orient them, their neighbours do.
+  const uint32_t* neighbors = mesh->GetTetNeighbors();
+  auto order = [&](uint32_t face)
+  {
+    const uint32_t* ids = tp + 4 * static_cast<size_t>(face >> 2);
+    const int* fp = vtkTetMesh::FacePoints[face & 3u];
+    std::array<uint32_t, 3> v = { ids[fp[0]], ids[fp[1]], ids[fp[2]] };
+    std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+    return v;
+  };
+  for (uint32_t face = 0; face < 4 * static_cast<uint32_t>(numTets); ++face)
+  {
+    const uint32_t other = neighbors[face];
+    if (other == vtkTetMesh::NoNeighbor)
+    {
+      continue;
+    }
+    const std::array<uint32_t, 3> a = order(face), b = order(other);
+    if (a[0] != b[0] || a[1] != b[2] || a[2] != b[1])
+    {
+      error << "tet " << (face >> 2) << " face " << (face & 3u) << " and its neighbour tet "
+            << (other >> 2) << " face " << (other & 3u) << " see it with the same orientation";
+      return error.str();
+    }
+  }
   return std::string();
 }
 
