@@ -17,7 +17,8 @@
 //     --frames F        timed frames per setting, along a full turn of the camera (default 12)
 //     --csv FILE        append rows to FILE (default: standard output); a header when new
 //     --ours-only       only our default setting (the scaling runs on the dataset ladder)
-//     --sweep quick|full  our settings (default quick)
+//     --sweep quick|full|defaults  our settings (default quick); "defaults" times only ours,
+//                       over tile sizes, tets per pass and occlusion-query intervals
 //     --zsweep-max-tets T  ZSweep only up to T tets and 512 px (default 300000)
 //     --resample R,R,.. resampling resolutions for resample + GPU ray cast (default 64,128,256)
 //     --no-reference    skip the exact reference (error columns stay empty)
@@ -73,7 +74,7 @@ struct Options
   int Frames = 12;
   std::string Csv;
   bool OursOnly = false;
-  bool FullSweep = false;
+  std::string Sweep = "quick"; // quick, full or defaults
   vtkIdType ZSweepMaxTets = 300000;
   std::vector<int> Resample = { 64, 128, 256 };
   bool Reference = true;
@@ -216,7 +217,8 @@ struct Setting
 std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
 {
   std::vector<Setting> settings;
-  auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table) {
+  auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
+                  int queryInterval = 4) {
     settings.push_back({ "ours", name, [=](double&) {
                           auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
                           m->SetInputData(grid);
@@ -224,6 +226,7 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
                           m->SetMeshLayout(layout);
                           m->SetTetsPerPass(n);
                           m->SetTileSize(tile);
+                          m->SetOcclusionQueryInterval(queryInterval);
                           if (table > 0)
                           {
                             m->SetPreIntegrationTableScalarSize(table);
@@ -233,6 +236,24 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
                         } });
   };
   using M = vtkTiledRayCastVolumeMapper;
+  if (o.Sweep == "defaults")
+  {
+    // The choice of defaults: tile size with one unlimited pass per layer, then the paper's
+    // bounded passes (N tets each) with their occlusion queries every K passes.
+    const int p = M::PARTIAL_PRE_INTEGRATION, c = M::COMPACT_LAYOUT;
+    for (int tile : { 64, 128, 256, 512, 0 })
+    {
+      ours("partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p, c, 0,
+        tile, 0);
+    }
+    for (int n : { 1, 4, 16, 64 })
+    {
+      ours("partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4);
+    }
+    ours("partial compact N16 T256 K1", p, c, 16, 256, 0, 1);
+    ours("partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
+    return settings;
+  }
   ours("partial compact N0 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 128, 0);
   if (o.OursOnly)
   {
@@ -244,7 +265,7 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   ours("partial paper N0 T128", M::PARTIAL_PRE_INTEGRATION, M::PAPER_LAYOUT, 0, 128, 0);
   ours("table3d compact N0 T128", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 128, 0);
   ours("table2d compact N0 T128", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 128, 0);
-  if (o.FullSweep)
+  if (o.Sweep == "full")
   {
     ours("partial compact N4 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 4, 128, 0);
     ours("partial compact N64 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 64, 128, 0);
@@ -339,7 +360,14 @@ int main(int argc, char* argv[])
     else if (a == "--ours-only")
       o.OursOnly = true;
     else if (a == "--sweep")
-      o.FullSweep = next() == "full";
+    {
+      o.Sweep = next();
+      if (o.Sweep != "quick" && o.Sweep != "full" && o.Sweep != "defaults")
+      {
+        std::cerr << "--sweep takes quick, full or defaults\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if (a == "--zsweep-max-tets")
       o.ZSweepMaxTets = atoll(next().c_str());
     else if (a == "--resample")

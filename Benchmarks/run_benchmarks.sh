@@ -4,10 +4,11 @@
 #   Benchmarks/run_benchmarks.sh cpu <output dir>
 # On the GPU machine, through the bundle (Module/bundle-gpu.sh, then on the device):
 #   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
-# "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling).
+# "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
+# "defaults" times our settings only, over tile size, tets per pass and query interval.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu or ladder}"
+kind="${1:?cpu, gpu, defaults or ladder}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -32,6 +33,16 @@ case "$kind" in
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
     "$bench" --size 1024 --frames 10 --csv "$out/results.csv" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  defaults)
+    # The study behind the mapper's defaults: tile size, tets per pass, occlusion-query interval
+    # (ours only), on the GPU meshes and the comb, whose rays re-enter up to six times.
+    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    "$bench" --sweep defaults --size "${TRC_DEFAULTS_SIZE:-1024}" --frames 10 --csv "$out/defaults.csv" \
+      "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
+      "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;

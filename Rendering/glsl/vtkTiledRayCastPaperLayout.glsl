@@ -35,17 +35,11 @@ void trcTetPoints(uint tet, out vec3 p[4])
 
 void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
 {
+  trcTetPoints(tet, p);
   ivec2 c = trcPaperTexel(tet);
-  vec4 v0 = texelFetch(in_Vertices, c, 0);
-  vec4 v1 = texelFetch(in_Vertices, c + ivec2(0, 1), 0);
-  vec4 v2 = texelFetch(in_Vertices, c + ivec2(0, 2), 0);
   vec4 m0 = texelFetch(in_FaceNormals, c, 0);
   vec4 m1 = texelFetch(in_FaceNormals, c + ivec2(0, 1), 0);
   vec4 m2 = texelFetch(in_FaceNormals, c + ivec2(0, 2), 0);
-  p[0] = v0.xyz;
-  p[1] = v1.xyz;
-  p[2] = v2.xyz;
-  p[3] = vec3(v0.w, v1.w, v2.w);
   n[0] = m0.xyz;
   n[1] = m1.xyz;
   n[2] = m2.xyz;
