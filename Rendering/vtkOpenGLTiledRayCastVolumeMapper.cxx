@@ -1716,6 +1716,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
         this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
         tile.Parity = 1 - tile.Parity;
       }
+      // The Z-update writes its own depth (0 or 1) for every pixel: it must not be depth-tested
+      // against the last one, or active rays (1 against 1) would not be copied and the next
+      // round would start from a stale set (a lost pass per round, no progress at all for K=1).
+      state->vtkglDepthFunc(GL_ALWAYS);
       state->vtkglDepthMask(GL_TRUE);
       this->CopyTile(window, tile, true);
       this->Queries.EndConditionalRender();

@@ -152,5 +152,21 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   mapper->SetTileSize(32);
   window->Render();
   ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "paper, 2 tets/pass") && ok;
+  const int passesEvery4 = mapper->GetStatistics()->GetMaximumPassesPerTile();
+
+  // A query after every pass: each round then has a single pass, whose progress the Z-update must
+  // carry over (it once did not, and this looped until the pass limit). Checking more often
+  // can only end a tile sooner.
+  mapper->SetOcclusionQueryInterval(1);
+  mapper->SetMaximumNumberOfPassesPerLayer(5000);
+  window->Render();
+  ok = trctest::CheckAgainstReference(
+         window, renderer, volume, bounds, "paper, 2 tets/pass, query every pass") &&
+    ok;
+  const int passesEvery1 = mapper->GetStatistics()->GetMaximumPassesPerTile();
+  ok = Expect(passesEvery1 <= passesEvery4,
+         "queries after every pass: at most as many passes per tile (" +
+           std::to_string(passesEvery1) + " against " + std::to_string(passesEvery4) + ")") &&
+    ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
