@@ -254,25 +254,25 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     ours("partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
     return settings;
   }
-  ours("partial compact N0 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 128, 0);
+  ours("partial compact N0 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 256, 0);
   if (o.OursOnly)
   {
     return settings;
   }
   ours("partial compact N0 T64", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 64, 0);
-  ours("partial compact N0 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 256, 0);
-  ours("partial compact N16 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 16, 128, 0);
-  ours("partial paper N0 T128", M::PARTIAL_PRE_INTEGRATION, M::PAPER_LAYOUT, 0, 128, 0);
-  ours("table3d compact N0 T128", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 128, 0);
-  ours("table2d compact N0 T128", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 128, 0);
+  ours("partial compact N0 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 128, 0);
+  ours("partial compact N16 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 16, 256, 0);
+  ours("partial paper N0 T256", M::PARTIAL_PRE_INTEGRATION, M::PAPER_LAYOUT, 0, 256, 0);
+  ours("table3d compact N0 T256", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 256, 0);
+  ours("table2d compact N0 T256", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 256, 0);
   if (o.Sweep == "full")
   {
-    ours("partial compact N4 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 4, 128, 0);
-    ours("partial compact N64 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 64, 128, 0);
+    ours("partial compact N4 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 4, 256, 0);
+    ours("partial compact N64 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 64, 256, 0);
     ours("partial compact N0 T32", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 32, 0);
     ours("partial compact N0 Tall", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 0, 0);
-    ours("table3d64 compact N0 T128", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 128, 64);
-    ours("table2d64 compact N0 T128", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 128, 64);
+    ours("table3d64 compact N0 T256", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 256, 64);
+    ours("table2d64 compact N0 T256", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 256, 64);
   }
 
   settings.push_back({ "projected_tetrahedra", "default", [=](double&) {

@@ -151,7 +151,8 @@ public:
   ///@{
   /**
    * The side, in pixels, of the square screen tiles that ray-casting passes run over. 0 means
-   * one tile covering the whole viewport. Default 128.
+   * one tile covering the whole viewport. Default 256: the fastest or within 2 % of it on every
+   * mesh measured, on an H100 and on llvmpipe (docs/benchmarks.md, "Choice of defaults").
    */
   vtkSetClampMacro(TileSize, int, 0, VTK_INT_MAX);
   vtkGetMacro(TileSize, int);
@@ -250,7 +251,7 @@ protected:
   int MeshLayout = COMPACT_LAYOUT;
   int TetsPerPass = 0;
   int OcclusionQueryInterval = 4;
-  int TileSize = 128;
+  int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumNumberOfPassesPerLayer = 1000000;
   int VectorMode = COMPONENT;
