@@ -20,30 +20,30 @@ ivec2 trcPaperTexel(uint tet)
   return ivec2(t % in_paperWidth, 3 * (t / in_paperWidth));
 }
 
-// The four points of a tet (three texels).
+// Four vectors packed in a tet's three texels of one texture:
+// (v0.xyz, v3.x) (v1.xyz, v3.y) (v2.xyz, v3.z).
+void trcPaperUnpack(sampler2D source, ivec2 c, out vec3 v[4])
+{
+  vec4 t0 = texelFetch(source, c, 0);
+  vec4 t1 = texelFetch(source, c + ivec2(0, 1), 0);
+  vec4 t2 = texelFetch(source, c + ivec2(0, 2), 0);
+  v[0] = t0.xyz;
+  v[1] = t1.xyz;
+  v[2] = t2.xyz;
+  v[3] = vec3(t0.w, t1.w, t2.w);
+}
+
+// The four points of a tet.
 void trcTetPoints(uint tet, out vec3 p[4])
 {
-  ivec2 c = trcPaperTexel(tet);
-  vec4 v0 = texelFetch(in_Vertices, c, 0);
-  vec4 v1 = texelFetch(in_Vertices, c + ivec2(0, 1), 0);
-  vec4 v2 = texelFetch(in_Vertices, c + ivec2(0, 2), 0);
-  p[0] = v0.xyz;
-  p[1] = v1.xyz;
-  p[2] = v2.xyz;
-  p[3] = vec3(v0.w, v1.w, v2.w);
+  trcPaperUnpack(in_Vertices, trcPaperTexel(tet), p);
 }
 
 void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
 {
-  trcTetPoints(tet, p);
   ivec2 c = trcPaperTexel(tet);
-  vec4 m0 = texelFetch(in_FaceNormals, c, 0);
-  vec4 m1 = texelFetch(in_FaceNormals, c + ivec2(0, 1), 0);
-  vec4 m2 = texelFetch(in_FaceNormals, c + ivec2(0, 2), 0);
-  n[0] = m0.xyz;
-  n[1] = m1.xyz;
-  n[2] = m2.xyz;
-  n[3] = vec3(m0.w, m1.w, m2.w);
+  trcPaperUnpack(in_Vertices, c, p);
+  trcPaperUnpack(in_FaceNormals, c, n);
   field = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 2), 0);
 }
 
