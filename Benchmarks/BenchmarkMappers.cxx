@@ -115,8 +115,8 @@ void WriteRow(std::ostream& os, const Row& r)
      << r.Setting << "," << r.Frames << "," << Cell(r.MedianMs) << "," << Cell(r.MinMs) << ","
      << Cell(r.GpuMedianMs) << "," << Cell(r.FirstFrameMs) << "," << Cell(r.ResampleMs) << ","
      << Cell(r.TetsPerS) << "," << Cell(r.GpuBytesPerTet) << "," << Cell(r.Rmse) << ","
-     << Cell(r.P999) << "," << Cell(r.MaxErr) << "," << Cell(r.LostPixels) << ","
-     << Cell(r.Layers) << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "\n";
+     << Cell(r.P999) << "," << Cell(r.MaxErr) << "," << Cell(r.LostPixels) << "," << Cell(r.Layers)
+     << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "\n";
 }
 
 double Median(std::vector<double> v)
@@ -218,22 +218,25 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
 {
   std::vector<Setting> settings;
   auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
-                  int queryInterval = 4) {
-    settings.push_back({ "ours", name, [=](double&) {
-                          auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
-                          m->SetInputData(grid);
-                          m->SetIntegrationMode(mode);
-                          m->SetMeshLayout(layout);
-                          m->SetTetsPerPass(n);
-                          m->SetTileSize(tile);
-                          m->SetOcclusionQueryInterval(queryInterval);
-                          if (table > 0)
-                          {
-                            m->SetPreIntegrationTableScalarSize(table);
-                            m->SetPreIntegrationTableLengthSize(table / 2);
-                          }
-                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-                        } });
+                int queryInterval = 4)
+  {
+    settings.push_back({ "ours", name,
+      [=](double&)
+      {
+        auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
+        m->SetInputData(grid);
+        m->SetIntegrationMode(mode);
+        m->SetMeshLayout(layout);
+        m->SetTetsPerPass(n);
+        m->SetTileSize(tile);
+        m->SetOcclusionQueryInterval(queryInterval);
+        if (table > 0)
+        {
+          m->SetPreIntegrationTableScalarSize(table);
+          m->SetPreIntegrationTableLengthSize(table / 2);
+        }
+        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+      } });
   };
   using M = vtkTiledRayCastVolumeMapper;
   if (o.Sweep == "defaults")
@@ -275,70 +278,76 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     ours("table2d64 compact N0 T256", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 256, 64);
   }
 
-  settings.push_back({ "projected_tetrahedra", "default", [=](double&) {
-                        auto m = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
-                        m->SetInputData(grid);
-                        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-                      } });
-  settings.push_back({ "bunyk_raycast", "partial preintegration", [=](double&) {
-                        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
-                        m->SetInputData(grid);
-                        vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
-                        m->SetRayIntegrator(integrator);
-                        m->AutoAdjustSampleDistancesOff();
-                        m->SetImageSampleDistance(1.0f);
-                        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-                      } });
+  settings.push_back({ "projected_tetrahedra", "default",
+    [=](double&)
+    {
+      auto m = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
+      m->SetInputData(grid);
+      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+    } });
+  settings.push_back({ "bunyk_raycast", "partial preintegration",
+    [=](double&)
+    {
+      auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
+      m->SetInputData(grid);
+      vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
+      m->SetRayIntegrator(integrator);
+      m->AutoAdjustSampleDistancesOff();
+      m->SetImageSampleDistance(1.0f);
+      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+    } });
   if (grid->GetNumberOfCells() <= o.ZSweepMaxTets && size <= 512)
   {
-    settings.push_back({ "zsweep", "default", [=](double&) {
-                          auto m = vtkSmartPointer<vtkUnstructuredGridVolumeZSweepMapper>::New();
-                          m->SetInputData(grid);
-                          m->AutoAdjustSampleDistancesOff();
-                          m->SetImageSampleDistance(1.0f);
-                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-                        } });
+    settings.push_back({ "zsweep", "default",
+      [=](double&)
+      {
+        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeZSweepMapper>::New();
+        m->SetInputData(grid);
+        m->AutoAdjustSampleDistancesOff();
+        m->SetImageSampleDistance(1.0f);
+        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+      } });
   }
   for (int r : o.Resample)
   {
-    settings.push_back({ "resample_gpu", "res" + std::to_string(r), [=](double& prepareMs) {
-                          // What ParaView users do instead: resample to a regular grid (points
-                          // outside the mesh are masked out) and use VTK's GPU ray caster.
-                          vtkNew<vtkTimerLog> timer;
-                          timer->StartTimer();
-                          vtkNew<vtkResampleToImage> resample;
-                          resample->SetInputDataObject(grid);
-                          resample->SetSamplingDimensions(r, r, r);
-                          resample->UseInputBoundsOn();
-                          resample->Update();
-                          timer->StopTimer();
-                          prepareMs = 1000.0 * timer->GetElapsedTime();
-                          vtkImageData* image = resample->GetOutput();
-                          auto volumeImage = vtkSmartPointer<vtkImageData>::New();
-                          volumeImage->ShallowCopy(image);
-                          auto mask = vtkSmartPointer<vtkImageData>::New();
-                          mask->CopyStructure(image);
-                          vtkDataArray* valid =
-                            image->GetPointData()->GetArray(resample->GetMaskArrayName());
-                          vtkNew<vtkUnsignedCharArray> maskValues;
-                          maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
-                          for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
-                          {
-                            maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
-                          }
-                          mask->GetPointData()->SetScalars(maskValues);
-                          auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
-                          m->SetInputData(volumeImage);
-                          m->SetMaskInput(mask);
-                          m->SetMaskTypeToBinary();
-                          m->AutoAdjustSampleDistancesOff();
-                          double spacing[3];
-                          volumeImage->GetSpacing(spacing);
-                          m->SetSampleDistance(
-                            0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
-                          // The mask and image are kept alive by the mapper.
-                          return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-                        } });
+    settings.push_back({ "resample_gpu", "res" + std::to_string(r),
+      [=](double& prepareMs)
+      {
+        // What ParaView users do instead: resample to a regular grid (points
+        // outside the mesh are masked out) and use VTK's GPU ray caster.
+        vtkNew<vtkTimerLog> timer;
+        timer->StartTimer();
+        vtkNew<vtkResampleToImage> resample;
+        resample->SetInputDataObject(grid);
+        resample->SetSamplingDimensions(r, r, r);
+        resample->UseInputBoundsOn();
+        resample->Update();
+        timer->StopTimer();
+        prepareMs = 1000.0 * timer->GetElapsedTime();
+        vtkImageData* image = resample->GetOutput();
+        auto volumeImage = vtkSmartPointer<vtkImageData>::New();
+        volumeImage->ShallowCopy(image);
+        auto mask = vtkSmartPointer<vtkImageData>::New();
+        mask->CopyStructure(image);
+        vtkDataArray* valid = image->GetPointData()->GetArray(resample->GetMaskArrayName());
+        vtkNew<vtkUnsignedCharArray> maskValues;
+        maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
+        for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
+        {
+          maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
+        }
+        mask->GetPointData()->SetScalars(maskValues);
+        auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+        m->SetInputData(volumeImage);
+        m->SetMaskInput(mask);
+        m->SetMaskTypeToBinary();
+        m->AutoAdjustSampleDistancesOff();
+        double spacing[3];
+        volumeImage->GetSpacing(spacing);
+        m->SetSampleDistance(0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
+        // The mask and image are kept alive by the mapper.
+        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+      } });
   }
   return settings;
 }

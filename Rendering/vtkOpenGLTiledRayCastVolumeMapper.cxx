@@ -40,6 +40,7 @@
 #include "vtkTetMeshPaperLayout.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTextureObject.h"
+#include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -128,18 +129,6 @@ private:
   const char* Name;
 };
 
-// A column-major float copy of a row-major double 4x4 matrix, as GLSL's mat4 expects.
-void ToColumnMajor(const double m[16], float out[16])
-{
-  for (int r = 0; r < 4; ++r)
-  {
-    for (int c = 0; c < 4; ++c)
-    {
-      out[4 * c + r] = static_cast<float>(m[4 * r + c]);
-    }
-  }
-}
-
 // A screen tile, in pixels of the viewport.
 struct Tile
 {
@@ -149,23 +138,6 @@ struct Tile
   bool Running = false;           // still has rays to advance in the current layer
   unsigned int LastQuery = 0;     // latest count of the tile's active rays
   unsigned int PreviousQuery = 0; // the count before it
-};
-
-// Per-frame geometry: how pixels map to object-space rays, computed in double precision.
-struct FrameGeometry
-{
-  float RayOrigin[3][3];
-  float RayDir[3][3];
-  float WNear[3];
-  float WFar[3];
-  float LambdaNear = 0;
-  float ObjectToWorld[9];
-  double ObjectToWorldNorm = 1; // bounds how much the volume's matrix stretches lengths
-  float ObjectToClip[16];
-  float NearPlane[4];
-  bool NearPlaneCutsMesh = false;
-  bool Mirrored = false;
-  bool Valid = false;
 };
 
 // A program of the window's shader cache (the cache owns it) and the empty vertex array every
@@ -376,7 +348,7 @@ public:
   std::string LastError;
 
   // This frame.
-  FrameGeometry Geometry;
+  vtkTiledRayCastFrameGeometry Geometry;
   std::vector<Tile> Tiles;
   // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
   // them when that count was zero.
@@ -397,7 +369,6 @@ public:
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
   bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
-  void ComputeGeometry(vtkRenderer* ren, vtkVolume* vol);
   void MakeTiles();
   void ReadTimers(bool wait);
 
@@ -1115,132 +1086,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ComputeGeometry(
-  vtkRenderer* ren, vtkVolume* vol)
-{
-  FrameGeometry& g = this->Geometry;
-  g.Valid = false;
-  const double aspect = ren->GetTiledAspectRatio();
-  vtkCamera* camera = ren->GetActiveCamera();
-  vtkMatrix4x4* worldToClip = camera->GetCompositeProjectionTransformMatrix(aspect, -1, 1);
-
-  // Shifted object coordinates (those of the GPU layout) to clip coordinates, in double.
-  vtkNew<vtkMatrix4x4> shift;
-  for (int i = 0; i < 3; ++i)
-  {
-    shift->SetElement(i, 3, this->Shift[i]);
-  }
-  vtkNew<vtkMatrix4x4> objectToWorld;
-  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), shift, objectToWorld);
-  vtkNew<vtkMatrix4x4> objectToClip;
-  vtkMatrix4x4::Multiply4x4(worldToClip, objectToWorld, objectToClip);
-  vtkNew<vtkMatrix4x4> clipToObject;
-  vtkMatrix4x4::Invert(objectToClip, clipToObject);
-  ToColumnMajor(objectToClip->GetData(), g.ObjectToClip);
-
-  double linear[3][3];
-  double norm = 0;
-  for (int r = 0; r < 3; ++r)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      linear[r][c] = vol->GetMatrix()->GetElement(r, c);
-      g.ObjectToWorld[3 * c + r] = static_cast<float>(linear[r][c]);
-      norm += linear[r][c] * linear[r][c];
-    }
-  }
-  g.ObjectToWorldNorm = std::sqrt(norm);
-  g.Mirrored = vtkMath::Determinant3x3(linear) < 0;
-
-  // Near and far points of the rays through NDC (0,0), (1,0) and (0,1): both are affine in
-  // NDC for VTK's perspective and parallel cameras, and so are the clip-space w's.
-  auto unproject = [&](double x, double y, double z, double q[3], double& w)
-  {
-    double h[4] = { x, y, z, 1.0 };
-    clipToObject->MultiplyPoint(h, h);
-    for (int i = 0; i < 3; ++i)
-    {
-      q[i] = h[i] / h[3];
-    }
-    w = 1.0 / h[3];
-  };
-  double nearPt[3][3], farPt[3][3], wn[3], wf[3];
-  const double corners[3][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 } };
-  for (int k = 0; k < 3; ++k)
-  {
-    unproject(corners[k][0], corners[k][1], -1.0, nearPt[k], wn[k]);
-    unproject(corners[k][0], corners[k][1], 1.0, farPt[k], wf[k]);
-  }
-  double dir[3][3];
-  for (int k = 0; k < 3; ++k)
-  {
-    for (int i = 0; i < 3; ++i)
-    {
-      dir[k][i] = farPt[k][i] - nearPt[k][i];
-    }
-  }
-  // lambda = 0 where the central ray passes closest to the mesh centre (the origin of the
-  // shifted coordinates), so that lambda stays small where the mesh is.
-  const double d2 = vtkMath::Dot(dir[0], dir[0]);
-  double muCentre = d2 > 0 ? -vtkMath::Dot(nearPt[0], dir[0]) / d2 : 0.0;
-  muCentre = std::min(std::max(muCentre, 0.0), 1.0);
-  g.LambdaNear = static_cast<float>(-muCentre);
-  for (int i = 0; i < 3; ++i)
-  {
-    const double o0 = nearPt[0][i] + muCentre * dir[0][i];
-    const double ox = nearPt[1][i] + muCentre * dir[1][i] - o0;
-    const double oy = nearPt[2][i] + muCentre * dir[2][i] - o0;
-    g.RayOrigin[0][i] = static_cast<float>(o0);
-    g.RayOrigin[1][i] = static_cast<float>(ox);
-    g.RayOrigin[2][i] = static_cast<float>(oy);
-    g.RayDir[0][i] = static_cast<float>(dir[0][i]);
-    g.RayDir[1][i] = static_cast<float>(dir[1][i] - dir[0][i]);
-    g.RayDir[2][i] = static_cast<float>(dir[2][i] - dir[0][i]);
-  }
-  g.WNear[0] = static_cast<float>(wn[0]);
-  g.WNear[1] = static_cast<float>(wn[1] - wn[0]);
-  g.WNear[2] = static_cast<float>(wn[2] - wn[0]);
-  g.WFar[0] = static_cast<float>(wf[0]);
-  g.WFar[1] = static_cast<float>(wf[1] - wf[0]);
-  g.WFar[2] = static_cast<float>(wf[2] - wf[0]);
-
-  // The near plane, positive on the camera's side of nothing: beyond it, towards the scene.
-  double ex[3], ey[3], normal[3];
-  for (int i = 0; i < 3; ++i)
-  {
-    ex[i] = nearPt[1][i] - nearPt[0][i];
-    ey[i] = nearPt[2][i] - nearPt[0][i];
-  }
-  vtkMath::Cross(ex, ey, normal);
-  if (vtkMath::Dot(normal, dir[0]) < 0)
-  {
-    for (double& v : normal)
-    {
-      v = -v;
-    }
-  }
-  vtkMath::Normalize(normal);
-  const double offset = -vtkMath::Dot(normal, nearPt[0]);
-  for (int i = 0; i < 3; ++i)
-  {
-    g.NearPlane[i] = static_cast<float>(normal[i]);
-  }
-  g.NearPlane[3] = static_cast<float>(offset);
-  // Only when the near plane cuts the mesh's bounds can a ray start inside the mesh.
-  bool below = false, above = false;
-  for (int c = 0; c < 8; ++c)
-  {
-    const double p[3] = { this->MeshBounds[c & 1], this->MeshBounds[2 + ((c >> 1) & 1)],
-      this->MeshBounds[4 + ((c >> 2) & 1)] };
-    const double d = vtkMath::Dot(normal, p) + offset;
-    below = below || d < 0;
-    above = above || d > 0;
-  }
-  g.NearPlaneCutsMesh = below && above;
-  g.Valid = std::isfinite(g.RayDir[0][0]) && std::isfinite(g.RayOrigin[0][0]);
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
 {
   const int w = this->ImageSize[0];
@@ -1343,7 +1188,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShaderProgram* p)
 {
-  const FrameGeometry& g = this->Geometry;
+  const vtkTiledRayCastFrameGeometry& g = this->Geometry;
   const float viewport[2] = { static_cast<float>(this->ImageSize[0]),
     static_cast<float>(this->ImageSize[1]) };
   p->SetUniform2f("in_viewportSize", viewport);
@@ -1972,8 +1817,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  impl->ComputeGeometry(ren, vol);
-  if (!impl->Geometry.Valid)
+  if (!impl->Geometry.Compute(ren, vol, impl->Shift, impl->MeshBounds))
   {
     impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return;

@@ -39,7 +39,6 @@
 #include <string>
 #include <vector>
 
-
 // Runs a check that returns an error string.
 #define TRC_CHECK_EMPTY(expr)                                                                      \
   do                                                                                               \
