@@ -151,8 +151,9 @@ public:
   ///@{
   /**
    * The side, in pixels, of the square screen tiles that ray-casting passes run over. 0 means
-   * one tile covering the whole viewport. Default 256: the fastest or within 2 % of it on every
-   * mesh measured, on an H100 and on llvmpipe (docs/benchmarks.md, "Choice of defaults").
+   * one tile covering the whole viewport. Default 256: measured on an H100, the fastest on two
+   * meshes of four and within 6 % of the fastest on the others, where larger tiles win but lose
+   * on the first two (docs/benchmarks.md, "Choice of defaults").
    */
   vtkSetClampMacro(TileSize, int, 0, VTK_INT_MAX);
   vtkGetMacro(TileSize, int);
