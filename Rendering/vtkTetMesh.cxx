@@ -11,6 +11,7 @@
 #include "vtkTetMesh.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkTypeUInt32Array.h"
 
@@ -19,28 +20,6 @@
 #include <limits>
 
 vtkStandardNewMacro(vtkTetMesh);
-
-namespace
-{
-inline void Sub(const double* a, const double* b, double r[3])
-{
-  r[0] = a[0] - b[0];
-  r[1] = a[1] - b[1];
-  r[2] = a[2] - b[2];
-}
-
-inline void Cross(const double a[3], const double b[3], double r[3])
-{
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline double Dot(const double a[3], const double b[3])
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-}
 
 //------------------------------------------------------------------------------
 vtkTetMesh::vtkTetMesh() = default;
@@ -177,11 +156,11 @@ double vtkTetMesh::ComputeDeterminantFast(vtkIdType tet) const
   const uint32_t* ids = this->TetPoints.data() + 4 * tet;
   const double* p0 = this->Points.data() + 3 * static_cast<size_t>(ids[0]);
   double e1[3], e2[3], e3[3], c[3];
-  Sub(this->Points.data() + 3 * static_cast<size_t>(ids[1]), p0, e1);
-  Sub(this->Points.data() + 3 * static_cast<size_t>(ids[2]), p0, e2);
-  Sub(this->Points.data() + 3 * static_cast<size_t>(ids[3]), p0, e3);
-  Cross(e2, e3, c);
-  return Dot(e1, c);
+  vtkMath::Subtract(this->Points.data() + 3 * static_cast<size_t>(ids[1]), p0, e1);
+  vtkMath::Subtract(this->Points.data() + 3 * static_cast<size_t>(ids[2]), p0, e2);
+  vtkMath::Subtract(this->Points.data() + 3 * static_cast<size_t>(ids[3]), p0, e3);
+  vtkMath::Cross(e2, e3, c);
+  return vtkMath::Dot(e1, c);
 }
 
 //------------------------------------------------------------------------------
@@ -203,13 +182,13 @@ void vtkTetMesh::ComputeFaceNormalsFast(vtkIdType tet, double normals[12], bool 
   {
     const double* a = p[FacePoints[face][0]];
     double ab[3], ac[3];
-    Sub(p[FacePoints[face][1]], a, ab);
-    Sub(p[FacePoints[face][2]], a, ac);
+    vtkMath::Subtract(p[FacePoints[face][1]], a, ab);
+    vtkMath::Subtract(p[FacePoints[face][2]], a, ac);
     double* n = normals + 3 * face;
-    Cross(ab, ac, n);
+    vtkMath::Cross(ab, ac, n);
     if (unit)
     {
-      const double length = std::sqrt(Dot(n, n));
+      const double length = std::sqrt(vtkMath::Dot(n, n));
       const double scale = length > 0.0 ? 1.0 / length : 0.0;
       n[0] *= scale;
       n[1] *= scale;
@@ -263,13 +242,13 @@ bool vtkTetMesh::ComputeScalarGradientFast(vtkIdType tet, double gc[4]) const
   {
     // Solve e_k . g = s_k - s_0 (k = 1..3) by Cramer's rule with cross products.
     double e1[3], e2[3], e3[3], c23[3], c31[3], c12[3];
-    Sub(p[1], p[0], e1);
-    Sub(p[2], p[0], e2);
-    Sub(p[3], p[0], e3);
-    Cross(e2, e3, c23);
-    Cross(e3, e1, c31);
-    Cross(e1, e2, c12);
-    const double det = Dot(e1, c23);
+    vtkMath::Subtract(p[1], p[0], e1);
+    vtkMath::Subtract(p[2], p[0], e2);
+    vtkMath::Subtract(p[3], p[0], e3);
+    vtkMath::Cross(e2, e3, c23);
+    vtkMath::Cross(e3, e1, c31);
+    vtkMath::Cross(e1, e2, c12);
+    const double det = vtkMath::Dot(e1, c23);
     if (det != 0.0)
     {
       const double d1 = (s[1] - s[0]) / det;
@@ -281,7 +260,7 @@ bool vtkTetMesh::ComputeScalarGradientFast(vtkIdType tet, double gc[4]) const
       }
     }
   }
-  gc[3] = mean - Dot(gc, centroid);
+  gc[3] = mean - vtkMath::Dot(gc, centroid);
   return true;
 }
 

@@ -22,6 +22,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -52,27 +53,6 @@ namespace
 constexpr uint32_t NoNeighbor = vtkTetMesh::NoNeighbor;
 // Neighbour words keep 2 bits for the face: a mesh holds at most 2^30 tetrahedra.
 constexpr vtkIdType MaxTetrahedra = vtkIdType(1) << 30;
-
-//------------------------------------------------------------------------------
-// Small vector helpers (double precision).
-inline void Sub(const double* a, const double* b, double r[3])
-{
-  r[0] = a[0] - b[0];
-  r[1] = a[1] - b[1];
-  r[2] = a[2] - b[2];
-}
-
-inline void Cross(const double a[3], const double b[3], double r[3])
-{
-  r[0] = a[1] * b[2] - a[2] * b[1];
-  r[1] = a[2] * b[0] - a[0] * b[2];
-  r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-inline double Dot(const double a[3], const double b[3])
-{
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 
 //------------------------------------------------------------------------------
 // Splits [0, n) into `blocks` contiguous ranges processed in parallel, one call of f(block,
@@ -983,17 +963,17 @@ bool vtkTetMeshBuilder::vtkInternals::OrientAndClassify(double tolerance, bool a
         const double* p2 = p + 3 * static_cast<size_t>(ids[2]);
         const double* p3 = p + 3 * static_cast<size_t>(ids[3]);
         double e1[3], e2[3], e3[3], c[3];
-        Sub(p1, p0, e1);
-        Sub(p2, p0, e2);
-        Sub(p3, p0, e3);
-        Cross(e2, e3, c);
-        const double det = Dot(e1, c);
+        vtkMath::Subtract(p1, p0, e1);
+        vtkMath::Subtract(p2, p0, e2);
+        vtkMath::Subtract(p3, p0, e3);
+        vtkMath::Cross(e2, e3, c);
+        const double det = vtkMath::Dot(e1, c);
         double e4[3], e5[3], e6[3];
-        Sub(p2, p1, e4);
-        Sub(p3, p1, e5);
-        Sub(p3, p2, e6);
-        const double l2 = std::max(
-          { Dot(e1, e1), Dot(e2, e2), Dot(e3, e3), Dot(e4, e4), Dot(e5, e5), Dot(e6, e6) });
+        vtkMath::Subtract(p2, p1, e4);
+        vtkMath::Subtract(p3, p1, e5);
+        vtkMath::Subtract(p3, p2, e6);
+        const double l2 = std::max({ vtkMath::Dot(e1, e1), vtkMath::Dot(e2, e2),
+          vtkMath::Dot(e3, e3), vtkMath::Dot(e4, e4), vtkMath::Dot(e5, e5), vtkMath::Dot(e6, e6) });
         const double l3 = l2 * std::sqrt(l2);
         uint8_t f = flags[t] & static_cast<uint8_t>(~vtkTetMesh::Degenerate);
         // 6|V| <= tol L^3; a tetrahedron with a repeated point has det exactly 0. The sign of a
@@ -1480,14 +1460,14 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
         p + 3 * static_cast<size_t>(facePoint(g, k)) + 3, b[k]);
     }
     double ab[3], ac[3], nf[3], ng[3];
-    Sub(a[1], a[0], ab);
-    Sub(a[2], a[0], ac);
-    Cross(ab, ac, nf);
-    Sub(b[1], b[0], ab);
-    Sub(b[2], b[0], ac);
-    Cross(ab, ac, ng);
-    const double lf = std::sqrt(Dot(nf, nf));
-    const double lg = std::sqrt(Dot(ng, ng));
+    vtkMath::Subtract(a[1], a[0], ab);
+    vtkMath::Subtract(a[2], a[0], ac);
+    vtkMath::Cross(ab, ac, nf);
+    vtkMath::Subtract(b[1], b[0], ab);
+    vtkMath::Subtract(b[2], b[0], ac);
+    vtkMath::Cross(ab, ac, ng);
+    const double lf = std::sqrt(vtkMath::Dot(nf, nf));
+    const double lg = std::sqrt(vtkMath::Dot(ng, ng));
     if (lf == 0.0 || lg == 0.0)
     {
       return false;
@@ -1498,7 +1478,7 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
       ng[c] /= lg;
     }
     // Facing each other: the two sides of a seam.
-    if (Dot(nf, ng) > -0.99)
+    if (vtkMath::Dot(nf, ng) > -0.99)
     {
       return false;
     }
@@ -1506,38 +1486,38 @@ void vtkTetMeshBuilder::vtkInternals::FindDuplicatesAndCracks()
     for (int k = 0; k < 3; ++k)
     {
       double e[3];
-      Sub(a[(k + 1) % 3], a[k], e);
-      size = std::max(size, std::sqrt(Dot(e, e)));
+      vtkMath::Subtract(a[(k + 1) % 3], a[k], e);
+      size = std::max(size, std::sqrt(vtkMath::Dot(e, e)));
     }
     // In the same plane, to a small fraction of the face size.
     for (int k = 0; k < 3; ++k)
     {
       double d[3];
-      Sub(b[k], a[0], d);
-      if (std::abs(Dot(d, nf)) > 1e-3 * size)
+      vtkMath::Subtract(b[k], a[0], d);
+      if (std::abs(vtkMath::Dot(d, nf)) > 1e-3 * size)
       {
         return false;
       }
     }
     // Overlapping interiors, in the plane of f.
     double u[3], w[3];
-    Sub(a[1], a[0], u);
-    const double lu = std::sqrt(Dot(u, u));
+    vtkMath::Subtract(a[1], a[0], u);
+    const double lu = std::sqrt(vtkMath::Dot(u, u));
     for (int c = 0; c < 3; ++c)
     {
       u[c] /= lu;
     }
-    Cross(nf, u, w);
+    vtkMath::Cross(nf, u, w);
     double a2[3][2], b2[3][2];
     for (int k = 0; k < 3; ++k)
     {
       double d[3];
-      Sub(a[k], a[0], d);
-      a2[k][0] = Dot(d, u);
-      a2[k][1] = Dot(d, w);
-      Sub(b[k], a[0], d);
-      b2[k][0] = Dot(d, u);
-      b2[k][1] = Dot(d, w);
+      vtkMath::Subtract(a[k], a[0], d);
+      a2[k][0] = vtkMath::Dot(d, u);
+      a2[k][1] = vtkMath::Dot(d, w);
+      vtkMath::Subtract(b[k], a[0], d);
+      b2[k][0] = vtkMath::Dot(d, u);
+      b2[k][1] = vtkMath::Dot(d, w);
     }
     return TrianglesOverlap2D(a2, b2, 1e-9 * size);
   };
