@@ -1262,18 +1262,34 @@ int vtkTetReferenceRenderer::Render()
   return 1;
 }
 
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::CompositeOverBackground(
-  vtkImageData* rgba, const double background[3], vtkImageData* output)
+namespace
+{
+// The premultiplied RGBA scalars of `rgba`; null, with a warning naming the caller, when there are
+// none or there is no output image.
+vtkDataArray* RGBAScalars(const char* caller, vtkImageData* rgba, vtkImageData* output)
 {
   vtkDataArray* in = rgba ? rgba->GetPointData()->GetScalars() : nullptr;
   if (!in || in->GetNumberOfComponents() != 4 || !output)
   {
-    vtkGenericWarningMacro("CompositeOverBackground needs an image with 4-component scalars.");
+    vtkGenericWarningMacro(<< caller << " needs an image with 4-component scalars.");
+    return nullptr;
+  }
+  return in;
+}
+
+// `rgba` composited over `background` into `output`: 3-component "RGB" scalars of ArrayT, each
+// composited value stored as convert(value).
+template <typename ArrayT, typename Convert>
+void CompositeInto(const char* caller, vtkImageData* rgba, const double background[3],
+  vtkImageData* output, Convert convert)
+{
+  vtkDataArray* in = RGBAScalars(caller, rgba, output);
+  if (!in)
+  {
     return;
   }
   const vtkIdType n = in->GetNumberOfTuples();
-  vtkNew<vtkFloatArray> rgb;
+  vtkNew<ArrayT> rgb;
   rgb->SetName("RGB");
   rgb->SetNumberOfComponents(3);
   rgb->SetNumberOfTuples(n);
@@ -1282,53 +1298,39 @@ void vtkTetReferenceRenderer::CompositeOverBackground(
     const double a = in->GetComponent(i, 3);
     for (int k = 0; k < 3; ++k)
     {
-      rgb->SetTypedComponent(
-        i, k, static_cast<float>(in->GetComponent(i, k) + (1.0 - a) * background[k]));
+      rgb->SetTypedComponent(i, k, convert(in->GetComponent(i, k) + (1.0 - a) * background[k]));
     }
   }
   output->Initialize();
   output->SetDimensions(rgba->GetDimensions());
   output->GetPointData()->SetScalars(rgb);
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::CompositeOverBackground(
+  vtkImageData* rgba, const double background[3], vtkImageData* output)
+{
+  CompositeInto<vtkFloatArray>("CompositeOverBackground", rgba, background, output,
+    [](double v) { return static_cast<float>(v); });
 }
 
 //------------------------------------------------------------------------------
 void vtkTetReferenceRenderer::ConvertToUnsignedChar(
   vtkImageData* rgba, const double background[3], vtkImageData* output)
 {
-  vtkDataArray* in = rgba ? rgba->GetPointData()->GetScalars() : nullptr;
-  if (!in || in->GetNumberOfComponents() != 4 || !output)
-  {
-    vtkGenericWarningMacro("ConvertToUnsignedChar needs an image with 4-component scalars.");
-    return;
-  }
-  const vtkIdType n = in->GetNumberOfTuples();
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetName("RGB");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    const double a = in->GetComponent(i, 3);
-    for (int k = 0; k < 3; ++k)
-    {
-      double v = in->GetComponent(i, k) + (1.0 - a) * background[k];
-      v = std::min(1.0, std::max(0.0, v));
-      rgb->SetTypedComponent(i, k, static_cast<unsigned char>(std::lround(255.0 * v)));
-    }
-  }
-  output->Initialize();
-  output->SetDimensions(rgba->GetDimensions());
-  output->GetPointData()->SetScalars(rgb);
+  CompositeInto<vtkUnsignedCharArray>("ConvertToUnsignedChar", rgba, background, output,
+    [](double v)
+    { return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, v)))); });
 }
 
 //------------------------------------------------------------------------------
 void vtkTetReferenceRenderer::EmulateRayCastImageDisplay(
   vtkImageData* rgba, const double background[3], vtkImageData* output)
 {
-  vtkDataArray* in = rgba ? rgba->GetPointData()->GetScalars() : nullptr;
-  if (!in || in->GetNumberOfComponents() != 4 || !output)
+  vtkDataArray* in = RGBAScalars("EmulateRayCastImageDisplay", rgba, output);
+  if (!in)
   {
-    vtkGenericWarningMacro("EmulateRayCastImageDisplay needs an image with 4-component scalars.");
     return;
   }
   int dims[3];
