@@ -138,8 +138,11 @@ def main(argv):
     writer.Write()
 
     print(f"tiledraycast {tiledraycast.__version__}, window {window.GetClassName()}")
-    print(f"OpenGL: {window.ReportCapabilities().splitlines()[1].strip()}"
-          if window.ReportCapabilities() else "OpenGL: (unknown)")
+    # The renderer line of the capabilities report (the EGL window puts EGL lines first).
+    renderer_line = next((line.split(":", 1)[1].strip()
+                          for line in window.ReportCapabilities().splitlines()
+                          if line.startswith("OpenGL renderer string")), "(unknown)")
+    print(f"OpenGL: {renderer_line}")
     print(f"mesh {os.path.basename(args.mesh)}: {mapper.GetValidationReport().GetSummary()}")
     print(f"mapper: {mapper.GetIntegrationModeAsString()} integration, "
           f"{mapper.GetMeshLayoutAsString()} layout, {mapper.GetTetsPerPass()} tets per pass, "
