@@ -40,6 +40,8 @@
 #include "vtkTetMeshPaperLayout.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTextureObject.h"
+#include "vtkTiledRayCastComputePipeline.h"
+#include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
@@ -69,6 +71,7 @@
 #include "vtkTiledRayCastPreIntegration3D.h"
 #include "vtkTiledRayCastQuadVS.h"
 #include "vtkTiledRayCastTraversalFS.h"
+#include "vtkTiledRayCastWalk.h"
 
 #include <algorithm>
 #include <array>
@@ -106,6 +109,10 @@ enum Phase
 // The depth at which tile rectangles are drawn: halfway, so that the early-z marks of the
 // Z-update pass (0 for finished rays, 1 for active ones) cull or pass them.
 const float RectangleDepth = 0.0f; // NDC, window depth 0.5
+
+// Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
+// place: the next layer must then have a larger key than the last (both pipelines' peeling).
+const float PeelEpsilon = 2e-6f;
 
 // A name in GL debuggers (apitrace, RenderDoc) around a phase of the render.
 class ScopedDebugEvent
@@ -258,7 +265,7 @@ double ComputeLongestEdge(vtkTetMesh* mesh)
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
-class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals
+class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastProgramSetup
 {
 public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
@@ -282,6 +289,11 @@ public:
   int MaxTextureSize = 0;
   int MaxTextureBufferSize = 0;
   int Max3DTextureSize = 0;
+  bool ComputeSupported = false; // OpenGL 4.3
+
+  // The pipeline of this frame: compute (vtkTiledRayCastComputePipeline) or fragment (below).
+  bool UseCompute = false;
+  vtkTiledRayCastComputePipeline Compute;
 
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
@@ -340,11 +352,27 @@ public:
   PhaseTimer PhaseTimers[NumberOfPhases];
   PhaseTimer TotalTimer;
   bool TimersPending = false;
+  bool TimingThisFrame = false;
+  void StartPhase(PhaseTimer& t)
+  {
+    if (this->TimingThisFrame)
+    {
+      t.Start();
+    }
+  }
+  void StopPhase(PhaseTimer& t)
+  {
+    if (this->TimingThisFrame)
+    {
+      t.Stop();
+    }
+  }
   unsigned int NearPlaneQuery = 0;
 
   // Warnings given once.
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
+  bool WarnedStoppedRays = false;
   std::string LastError;
 
   // This frame.
@@ -374,11 +402,18 @@ public:
 
   void ActivateTextures(bool activate);
   vtkShaderProgram* Use(vtkOpenGLRenderWindow* window, Program& program);
-  void SetFrameUniforms(vtkShaderProgram* program);
-  void SetMeshUniforms(vtkShaderProgram* program);
+  bool ChoosePipeline();
+  void SetFrameUniforms(vtkShaderProgram* program) override;
+  void SetMeshUniforms(vtkShaderProgram* program) override;
   // Uniforms of the boundary-face passes: exact coverage of pixel centres (see the vertex shader).
-  void SetCoverageUniforms(vtkShaderProgram* program);
-  void SetIntegrationUniforms(vtkShaderProgram* program);
+  void SetCoverageUniforms(vtkShaderProgram* program) override;
+  void SetIntegrationUniforms(vtkShaderProgram* program) override;
+  int GetMaximumSteps() const
+  {
+    // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
+    return static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX));
+  }
+  bool RenderCompute(vtkOpenGLRenderWindow* window);
   void SetTargetUniforms(vtkShaderProgram* program, int parity);
   void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
   void DrawViewport(Program& program);
@@ -394,8 +429,95 @@ public:
   void FinishStatistics();
 
   void ReleaseGraphicsResources(vtkWindow* window);
+  void ReleaseFragmentTargets(vtkWindow* window);
   void ClearMeshTextures();
 };
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
+{
+  const int requested = this->Self->GetPipeline();
+  if (requested == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE && !this->ComputeSupported)
+  {
+    this->ReportError("The compute pipeline needs OpenGL 4.3, which this context lacks. Nothing "
+                      "is drawn (the automatic or the fragment pipeline would draw).");
+    return false;
+  }
+  const bool compute = requested == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE ||
+    (requested == vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE && this->ComputeSupported);
+  if (compute != this->UseCompute && this->CheckedWindow)
+  {
+    // The other pipeline's per-pixel memory is no longer needed.
+    if (compute)
+    {
+      this->ReleaseFragmentTargets(this->CheckedWindow);
+    }
+    else
+    {
+      this->Compute.ReleaseGraphicsResources(this->CheckedWindow);
+    }
+  }
+  this->UseCompute = compute;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRenderWindow* window)
+{
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  vtkTiledRayCastComputePipeline::Frame frame;
+  frame.Window = window;
+  frame.Width = this->ImageSize[0];
+  frame.Height = this->ImageSize[1];
+  frame.NumberOfBoundaryFaces = this->NumberOfFaces;
+  frame.NumberOfTetrahedra = this->NumberOfTets;
+  frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
+  frame.Mirrored = this->Geometry.Mirrored;
+  frame.MaximumSteps = this->GetMaximumSteps();
+  frame.PeelEpsilon = PeelEpsilon;
+  frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
+  frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
+
+  std::string error;
+  this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
+  bool ok;
+  {
+    ScopedDebugEvent event("ListEntries");
+    ok = this->Compute.ListEntries(frame, *this, stats, error);
+  }
+  this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
+  if (ok)
+  {
+    ScopedDebugEvent event("Traverse");
+    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
+    this->Compute.Traverse(frame, *this);
+    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
+  }
+
+  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
+  vtkOpenGLState* state = window->GetState();
+  state->PopFramebufferBindings();
+  if (!ok)
+  {
+    this->ReportError(error);
+    return false;
+  }
+  ScopedDebugEvent event("Composite");
+  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
+  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->Compute.Composite(frame);
+  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
+
+  const int groups[2] = { (frame.Width + 7) / 8, (frame.Height + 7) / 8 };
+  stats->SetNumberOfTiles(groups[0] * groups[1]);
+  stats->SetNumberOfRayCastPasses(1);
+  stats->GetPassesPerTile().clear();
+  stats->FinishTilePasses();
+  vtkOpenGLCheckErrorMacro("failed after the compute pipeline");
+  return true;
+}
 
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::string& message)
@@ -442,6 +564,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
   window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_SIZE, &this->MaxTextureSize);
   window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &this->MaxTextureBufferSize);
   window->GetState()->vtkglGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &this->Max3DTextureSize);
+  this->ComputeSupported = vtkTiledRayCastComputeShader::IsSupported(window);
   this->ContextUsable = true;
   return true;
 }
@@ -804,12 +927,23 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
     : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
           ? vtkTiledRayCastPreIntegration2D
           : vtkTiledRayCastPartialPreIntegration);
-  const std::vector<std::pair<std::string, std::string>> common = {
-    { "//TRC::Version", this->VersionHeader },
+  std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Common::Dec", vtkTiledRayCastCommonFS },
     { "//TRC::Layout::Dec", layoutCode },
     { "//TRC::Integration::Dec", integration },
   };
+  if (this->UseCompute)
+  {
+    std::string error;
+    if (!this->Compute.UpdatePrograms(window, common, error))
+    {
+      this->ReportError(error);
+      return false;
+    }
+    return true;
+  }
+  common.insert(common.begin(), { "//TRC::Version", this->VersionHeader });
+  common.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
   const std::string peelDec = "uniform sampler2D in_previousState;\n"
                               "uniform sampler2D in_previousColor;\n"
                               "uniform sampler2D in_previousEntry;\n"
@@ -887,6 +1021,16 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
 {
   this->ImageSize[0] = width;
   this->ImageSize[1] = height;
+  if (this->UseCompute)
+  {
+    std::string error;
+    if (!this->Compute.UpdateTargets(window, width, height, error))
+    {
+      this->ReportError(error);
+      return false;
+    }
+    return true;
+  }
   if (width <= this->TargetSize[0] && height <= this->TargetSize[1] &&
     this->Framebuffer[0]->GetFBOIndex() != 0)
   {
@@ -1156,11 +1300,18 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   }
   textures.push_back(this->FaceTexture);
   textures.push_back(this->OpaqueDepth);
-  for (int q = 0; q < 2; ++q)
+  if (this->UseCompute)
   {
-    textures.push_back(this->State[q]);
-    textures.push_back(this->Color[q]);
-    textures.push_back(this->Entry[q]);
+    textures.push_back(this->Compute.GetColorTexture());
+  }
+  else
+  {
+    for (int q = 0; q < 2; ++q)
+    {
+      textures.push_back(this->State[q]);
+      textures.push_back(this->Color[q]);
+      textures.push_back(this->Entry[q]);
+    }
   }
   const int mode = this->Self->GetIntegrationMode();
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
@@ -1382,7 +1533,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
   p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
   p->SetUniformi("in_previousColor", this->Color[0]->GetTextureUnit());
-  p->SetUniformf("in_peelEpsilon", 2e-6f);
+  p->SetUniformf("in_peelEpsilon", PeelEpsilon);
   this->PeelProgram.VAO->Bind();
   const unsigned int query = this->Queries.Begin();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
@@ -1486,8 +1637,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
   this->SetMeshUniforms(traversal);
   this->SetIntegrationUniforms(traversal);
   traversal->SetUniformi("in_tetsPerPass", tetsPerPass);
-  traversal->SetUniformi("in_maximumSteps",
-    static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX)));
+  traversal->SetUniformi("in_maximumSteps", this->GetMaximumSteps());
 
   if (tetsPerPass == 0)
   {
@@ -1667,6 +1817,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishStatistics()
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->Compute.ReleaseGraphicsResources(window);
   this->ClearMeshTextures();
   this->FaceTexture->ReleaseGraphicsResources(window);
   this->FaceBuffer->ReleaseGraphicsResources();
@@ -1684,6 +1835,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
   this->Depth->ReleaseGraphicsResources(window);
   this->OpaqueDepth->ReleaseGraphicsResources(window);
+  this->UseCompute = false;
   for (Program* p :
     { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram, &this->TraversalProgram,
       &this->CopyProgram, &this->CountProgram, &this->CompositeProgram })
@@ -1706,6 +1858,20 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->MeshBytes = 0;
   this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseFragmentTargets(vtkWindow* window)
+{
+  for (int q = 0; q < 2; ++q)
+  {
+    this->State[q]->ReleaseGraphicsResources(window);
+    this->Color[q]->ReleaseGraphicsResources(window);
+    this->Entry[q]->ReleaseGraphicsResources(window);
+    this->Framebuffer[q]->ReleaseGraphicsResources(window);
+  }
+  this->Depth->ReleaseGraphicsResources(window);
+  this->TargetSize[0] = this->TargetSize[1] = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -1773,6 +1939,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   if (!impl->CheckContext(window))
   {
     impl->ReportError(impl->ContextError);
+    return;
+  }
+  if (!impl->ChoosePipeline())
+  {
     return;
   }
 
@@ -1848,20 +2018,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // GPU timers of the previous frame still in flight are not restarted: this frame is then not
   // timed, and the statistics keep the latest times measured.
   const bool timing = !impl->TimersPending;
-  auto start = [&](PhaseTimer& t)
-  {
-    if (timing)
-    {
-      t.Start();
-    }
-  };
-  auto stop = [&](PhaseTimer& t)
-  {
-    if (timing)
-    {
-      t.Stop();
-    }
-  };
+  impl->TimingThisFrame = timing;
+  auto start = [&](PhaseTimer& t) { impl->StartPhase(t); };
+  auto stop = [&](PhaseTimer& t) { impl->StopPhase(t); };
   if (timing)
   {
     impl->TotalTimer.Reset();
@@ -1882,12 +2041,39 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   int cullFaceMode = GL_BACK;
   state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
   impl->ActivateTextures(true);
+  vtkTiledRayCastStatistics* stats = this->Statistics;
+  stats->SetPipeline(impl->UseCompute ? "Compute" : "Fragment");
+  if (impl->UseCompute)
+  {
+    const bool ok = impl->RenderCompute(window);
+    stop(impl->TotalTimer);
+    impl->TimersPending = timing;
+    state->vtkglCullFace(cullFaceMode);
+    impl->ActivateTextures(false);
+    if (!ok)
+    {
+      return;
+    }
+    if (this->SynchronousStatistics)
+    {
+      impl->Compute.ReadCounts(stats);
+      impl->ReadTimers(true);
+    }
+    if (impl->Compute.GetNumberOfRaysStopped() > 0 && !impl->WarnedStoppedRays)
+    {
+      vtkWarningMacro(<< impl->Compute.GetNumberOfRaysStopped()
+                      << " rays reached the bound of steps in one boundary layer and were "
+                         "stopped; the mesh's neighbour links may loop.");
+      impl->WarnedStoppedRays = true;
+    }
+    this->FinishRender(impl->Compute.GetTargetBytes() + static_cast<vtkIdType>(width) * height * 4);
+    return;
+  }
   impl->Queries.Recycle();
   impl->PassBlocks.clear();
   impl->NearPlaneQuery = 0;
   impl->MakeTiles();
 
-  vtkTiledRayCastStatistics* stats = this->Statistics;
   start(impl->PhaseTimers[PhaseFirstHit]);
   impl->RenderFirstHit(window);
   stop(impl->PhaseTimers[PhaseFirstHit]);
@@ -1929,16 +2115,24 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReadTimers(true);
   }
 
-  stats->SetRendered(true);
-  stats->SetImageSize(width, height);
   stats->SetNumberOfLayers(layers);
   stats->SetNumberOfPeelPasses(peels);
+  // Per pixel: two sets of state, colour and entry (16 B each), plus two depth buffers.
+  this->FinishRender(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 16) + 8));
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes)
+{
+  vtkInternals* impl = this->Impl;
+  vtkTiledRayCastStatistics* stats = this->Statistics;
+  stats->SetRendered(true);
+  stats->SetImageSize(impl->ImageSize);
   stats->SetMeshBytes(impl->MeshBytes);
   stats->SetMeshBytesPerTetrahedron(
     impl->NumberOfTets > 0 ? static_cast<double>(impl->MeshBytes) / impl->NumberOfTets : 0.0);
   stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
-  // Per pixel: two sets of state, colour and entry (16 B each), plus two depth buffers.
-  stats->SetRenderTargetBytes(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 16) + 8));
+  stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");
 
   this->Timer->StopTimer();

@@ -58,6 +58,9 @@ public:
   static bool IsSupported(vtkRenderWindow* window);
 
 protected:
+  // Statistics every rendered frame ends with (memory, CPU time).
+  void FinishRender(vtkIdType renderTargetBytes);
+
   vtkOpenGLTiledRayCastVolumeMapper();
   ~vtkOpenGLTiledRayCastVolumeMapper() override;
 

@@ -21,7 +21,10 @@ vtkStandardNewMacro(vtkTiledRayCastStatistics);
 vtkTiledRayCastStatistics::vtkTiledRayCastStatistics() = default;
 
 //------------------------------------------------------------------------------
-vtkTiledRayCastStatistics::~vtkTiledRayCastStatistics() = default;
+vtkTiledRayCastStatistics::~vtkTiledRayCastStatistics()
+{
+  this->SetPipeline(nullptr);
+}
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastStatistics::ResetFrameCounts()
@@ -41,6 +44,9 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfZUpdatePasses = 0;
   this->NumberOfOcclusionQueries = 0;
   this->NumberOfRaysTerminatedEarly = 0;
+  this->NumberOfEntries = 0;
+  this->NumberOfSteps = 0;
+  this->MaximumStepsPerRay = 0;
   this->MeshBuildTime = 0;
   this->TransferFunctionBuildTime = 0;
   this->RenderTime = 0;
@@ -78,17 +84,19 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
     text << "nothing rendered";
     return text.str();
   }
-  text << this->ImageSize[0] << "x" << this->ImageSize[1] << " px, " << this->NumberOfRays
-       << " rays, " << this->NumberOfLayers << " layers (" << this->NumberOfPeelPasses
-       << " peel passes), " << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped
-       << " skipped), " << this->NumberOfRayCastPasses << " ray-casting passes (per tile min "
-       << this->MinimumPassesPerTile << ", median " << this->MedianPassesPerTile << ", max "
-       << this->MaximumPassesPerTile << "), " << this->NumberOfRaysTerminatedEarly
-       << " rays terminated early; GPU ms: first hit " << this->FirstHitTime << ", peeling "
-       << this->PeelingTime << ", ray casting " << this->RayCastingTime << ", compositing "
-       << this->CompositingTime << ", total " << this->TotalGPUTime << "; GPU memory "
-       << this->GetTotalGPUBytes() << " B (mesh " << this->MeshBytes << " B, "
-       << this->MeshBytesPerTetrahedron << " B/tet)";
+  text << (this->Pipeline ? this->Pipeline : "?") << " pipeline, " << this->ImageSize[0] << "x"
+       << this->ImageSize[1] << " px, " << this->NumberOfRays << " rays ("
+       << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay << "), "
+       << this->NumberOfEntries << " entries, " << this->NumberOfLayers << " layers ("
+       << this->NumberOfPeelPasses << " peel passes), " << this->NumberOfTiles << " tiles ("
+       << this->NumberOfTilesSkipped << " skipped), " << this->NumberOfRayCastPasses
+       << " ray-casting passes (per tile min " << this->MinimumPassesPerTile << ", median "
+       << this->MedianPassesPerTile << ", max " << this->MaximumPassesPerTile << "), "
+       << this->NumberOfRaysTerminatedEarly << " rays terminated early; GPU ms: first hit "
+       << this->FirstHitTime << ", peeling " << this->PeelingTime << ", ray casting "
+       << this->RayCastingTime << ", compositing " << this->CompositingTime << ", total "
+       << this->TotalGPUTime << "; GPU memory " << this->GetTotalGPUBytes() << " B (mesh "
+       << this->MeshBytes << " B, " << this->MeshBytesPerTetrahedron << " B/tet)";
   return text.str();
 }
 
@@ -111,6 +119,10 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfZUpdatePasses: " << this->NumberOfZUpdatePasses << "\n";
   os << indent << "NumberOfOcclusionQueries: " << this->NumberOfOcclusionQueries << "\n";
   os << indent << "NumberOfRaysTerminatedEarly: " << this->NumberOfRaysTerminatedEarly << "\n";
+  os << indent << "Pipeline: " << (this->Pipeline ? this->Pipeline : "(none)") << "\n";
+  os << indent << "NumberOfEntries: " << this->NumberOfEntries << "\n";
+  os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
+  os << indent << "MaximumStepsPerRay: " << this->MaximumStepsPerRay << "\n";
   os << indent << "FirstHitTime: " << this->FirstHitTime << "\n";
   os << indent << "PeelingTime: " << this->PeelingTime << "\n";
   os << indent << "RayCastingTime: " << this->RayCastingTime << "\n";

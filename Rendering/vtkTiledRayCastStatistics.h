@@ -108,6 +108,36 @@ public:
 
   ///@{
   /**
+   * Which pipeline rendered: "Compute" or "Fragment" (see vtkTiledRayCastVolumeMapper's
+   * Pipeline setting).
+   */
+  vtkSetStringMacro(Pipeline);
+  vtkGetStringMacro(Pipeline);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: the boundary-face crossings listed per pixel (entries; one per ray and
+   * boundary layer in front of the opaque depth), and the tetrahedra the rays walked: in all,
+   * per ray on average and the most of any ray. In the compute pipeline these counts and the
+   * numbers of rays, layers and early terminations come from the GPU: they are this frame's
+   * when SynchronousStatistics is on, else those of the latest frame whose counts had arrived.
+   */
+  vtkSetMacro(NumberOfEntries, vtkIdType);
+  vtkGetMacro(NumberOfEntries, vtkIdType);
+  vtkSetMacro(NumberOfSteps, vtkIdType);
+  vtkGetMacro(NumberOfSteps, vtkIdType);
+  vtkSetMacro(MaximumStepsPerRay, vtkIdType);
+  vtkGetMacro(MaximumStepsPerRay, vtkIdType);
+  double GetMeanStepsPerRay() const
+  {
+    return this->NumberOfRays > 0 ? static_cast<double>(this->NumberOfSteps) / this->NumberOfRays
+                                  : 0.0;
+  }
+  ///@}
+
+  ///@{
+  /**
    * Rays that stopped because their opacity reached the mapper's early-ray-termination
    * threshold.
    */
@@ -221,6 +251,10 @@ protected:
   vtkIdType NumberOfZUpdatePasses = 0;
   vtkIdType NumberOfOcclusionQueries = 0;
   vtkIdType NumberOfRaysTerminatedEarly = 0;
+  char* Pipeline = nullptr;
+  vtkIdType NumberOfEntries = 0;
+  vtkIdType NumberOfSteps = 0;
+  vtkIdType MaximumStepsPerRay = 0;
   double FirstHitTime = -1;
   double PeelingTime = -1;
   double RayCastingTime = -1;

@@ -52,11 +52,26 @@ const char* vtkTiledRayCastVolumeMapper::GetMeshLayoutAsString()
 }
 
 //------------------------------------------------------------------------------
+const char* vtkTiledRayCastVolumeMapper::GetPipelineAsString()
+{
+  switch (this->Pipeline)
+  {
+    case COMPUTE_PIPELINE:
+      return "Compute";
+    case FRAGMENT_PIPELINE:
+      return "Fragment";
+    default:
+      return "Automatic";
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "MeshLayout: " << this->GetMeshLayoutAsString() << "\n";
+  os << indent << "Pipeline: " << this->GetPipelineAsString() << "\n";
   os << indent << "TetsPerPass: " << this->TetsPerPass << "\n";
   os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";

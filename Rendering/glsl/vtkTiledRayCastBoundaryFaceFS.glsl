@@ -12,6 +12,10 @@
 // in_peelEpsilon of the last entry point must also have a larger key
 // ((tet << 2) | face) than the face entered there: each new layer is then
 // strictly after the previous one in (lambda, key) order.
+//
+// Compute pipeline (TRC_ENTRY_LIST): one pass, no depth test, every fragment
+// appended to its pixel's list of entries; the traversal applies the same
+// order and the same rules when it takes the next layer.
 //============================================================================
 //TRC::Common::Dec
 //TRC::Layout::Dec
@@ -43,9 +47,13 @@ bool trcCovers(vec2 q)
   return all(greaterThanEqual(distance, -in_coverageTolerance * lengths));
 }
 
+#ifdef TRC_ENTRY_LIST
+//TRC::EntryList::Dec
+#else
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
 layout(location = 2) out vec4 fragOutput2;
+#endif
 
 void main()
 {
@@ -82,6 +90,10 @@ void main()
     discard;
   }
   uint key = (ip_tet << 2u) | uint(ip_face);
+#ifdef TRC_ENTRY_LIST
+  // Compute pipeline: every crossing is listed; the traversal takes them in depth order.
+  trcAppendEntry(ivec2(gl_FragCoord.xy), lambda, key, false);
+#else
   // A new ray has no colour yet; a re-entering one keeps its own (set by peeling).
   vec4 color = vec4(0.0);
   //TRC::Peel::Impl
@@ -91,4 +103,5 @@ void main()
   fragOutput0 = trcPackState(ip_tet, lambda, TRC_ACTIVE, ip_face);
   fragOutput1 = color;
   fragOutput2 = trcPackEntry(lambda, key);
+#endif
 }

@@ -6,9 +6,13 @@
 
 flat in uint ip_tet;
 
+#ifdef TRC_ENTRY_LIST
+//TRC::EntryList::Dec
+#else
 layout(location = 0) out vec4 fragOutput0;
 layout(location = 1) out vec4 fragOutput1;
 layout(location = 2) out vec4 fragOutput2;
+#endif
 
 void main()
 {
@@ -17,9 +21,14 @@ void main()
   {
     discard;
   }
+#ifdef TRC_ENTRY_LIST
+  // Listed as a near-plane entry: the traversal starts there before any boundary face.
+  trcAppendEntry(ivec2(gl_FragCoord.xy), in_lambdaNear, ip_tet << 2u, true);
+#else
   // Depth 0: a ray that starts at the near plane wins over every boundary face.
   gl_FragDepth = 0.0;
   fragOutput0 = trcPackState(ip_tet, in_lambdaNear, TRC_ACTIVE, TRC_NO_FACE);
   fragOutput1 = vec4(0.0);
   fragOutput2 = trcPackEntry(in_lambdaNear, TRC_NEAR_PLANE_KEY);
+#endif
 }

@@ -49,6 +49,8 @@ struct Scene
       return false;
     }
     this->Mapper->SetInputData(this->Grid);
+    // The checks read this frame's counts (the compute pipeline counts on the GPU).
+    this->Mapper->SynchronousStatisticsOn();
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(trctest::MakePropertyFor(this->Grid, fraction));
     this->Renderer->AddVolume(this->Volume);
@@ -80,6 +82,50 @@ bool Expect(bool condition, const char* what)
   return condition;
 }
 
+bool RenderedWith(Scene& t, const char* pipeline)
+{
+  const char* used = t.Mapper->GetStatistics()->GetPipeline();
+  return Expect(used && std::string(used) == pipeline, pipeline);
+}
+
+// The comb's teeth seen across: rays enter up to 6 times.
+bool LoadComb(Scene& s, int argc, char* argv[])
+{
+  if (!s.Load(argc, argv, "comb6teeth_tetgen_270k.vtu", 0.2))
+    return false;
+  s.View(90, 10);
+  return true;
+}
+
+bool CombHasLayers(Scene& t)
+{
+  return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 4,
+    "rays across the comb's teeth re-enter the mesh several times");
+}
+
+// The camera inside a convex mesh: every ray starts in the tet holding its near-plane point.
+bool LoadInside(Scene& s, int argc, char* argv[])
+{
+  if (!s.Load(argc, argv, "cube_sfepy_200k.vtu", 0.1))
+    return false;
+  vtkCamera* camera = s.Renderer->GetActiveCamera();
+  double center[3];
+  s.Grid->GetCenter(center);
+  camera->SetFocalPoint(center[0] + 1, center[1] + 0.3, center[2] + 0.2);
+  camera->SetPosition(center);
+  camera->SetViewAngle(60);
+  s.Renderer->ResetCameraClippingRange();
+  return true;
+}
+
+bool AllRaysStartInside(Scene& t)
+{
+  vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+  return Expect(stats->GetNumberOfNearPlaneRays() == stats->GetNumberOfRays() &&
+      stats->GetNumberOfRays() == 200 * 200,
+    "every ray starts inside the mesh");
+}
+
 // Every scene: which mesh, which view, which mapper settings, which bounds and checks.
 using SceneSetup = std::function<bool(Scene&, int, char*[])>;
 const std::map<std::string, SceneSetup>& Scenes()
@@ -101,14 +147,39 @@ const std::map<std::string, SceneSetup>& Scenes()
     { "comb",
       [](Scene& s, int argc, char* argv[])
       {
-        // An extruded comb with 6 teeth, seen across the teeth: rays enter up to 6 times.
-        if (!s.Load(argc, argv, "comb6teeth_tetgen_270k.vtu", 0.2))
-          return false;
-        s.View(90, 10);
+        // An extruded comb with 6 teeth (the default pipeline: compute where there is OpenGL
+        // 4.3, as on llvmpipe).
+        s.Check = [](Scene& t) { return RenderedWith(t, "Compute") && CombHasLayers(t); };
+        return LoadComb(s, argc, argv);
+      } },
+    { "comb_fragment",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // The same with the paper's fragment pipeline: first hit and depth peeling.
+        s.Mapper->SetPipelineToFragment();
         s.Check = [](Scene& t)
         {
-          return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 4,
-            "rays across the comb's teeth re-enter the mesh several times");
+          return RenderedWith(t, "Fragment") && CombHasLayers(t) &&
+            Expect(t.Mapper->GetStatistics()->GetNumberOfPeelPasses() >= 4, "peel passes ran");
+        };
+        return LoadComb(s, argc, argv);
+      } },
+    { "entries",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // Across the comb's teeth, close up: most pixels cross several boundary layers, more
+        // entries than the compute pipeline's first list holds (1.25 per pixel), which must
+        // grow within the frame and lose nothing.
+        if (!s.Load(argc, argv, "comb6teeth_tetgen_270k.vtu", 0.2))
+          return false;
+        s.View(90, 10, 3.5);
+        s.Check = [](Scene& t)
+        {
+          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+          return RenderedWith(t, "Compute") &&
+            Expect(stats->GetNumberOfEntries() > 200 * 200 * 5 / 4,
+              "more entries than the list first held") &&
+            Expect(stats->GetNumberOfLayers() >= 4, "several layers");
         };
         return true;
       } },
@@ -197,25 +268,15 @@ const std::map<std::string, SceneSetup>& Scenes()
     { "inside",
       [](Scene& s, int argc, char* argv[])
       {
-        // The camera inside a convex mesh: every ray starts in the tet holding its near-plane
-        // point.
-        if (!s.Load(argc, argv, "cube_sfepy_200k.vtu", 0.1))
-          return false;
-        vtkCamera* camera = s.Renderer->GetActiveCamera();
-        double center[3];
-        s.Grid->GetCenter(center);
-        camera->SetFocalPoint(center[0] + 1, center[1] + 0.3, center[2] + 0.2);
-        camera->SetPosition(center);
-        camera->SetViewAngle(60);
-        s.Renderer->ResetCameraClippingRange();
-        s.Check = [](Scene& t)
-        {
-          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
-          return Expect(stats->GetNumberOfNearPlaneRays() == stats->GetNumberOfRays() &&
-              stats->GetNumberOfRays() == 200 * 200,
-            "every ray starts inside the mesh");
-        };
-        return true;
+        s.Check = AllRaysStartInside;
+        return LoadInside(s, argc, argv);
+      } },
+    { "inside_fragment",
+      [](Scene& s, int argc, char* argv[])
+      {
+        s.Mapper->SetPipelineToFragment();
+        s.Check = [](Scene& t) { return RenderedWith(t, "Fragment") && AllRaysStartInside(t); };
+        return LoadInside(s, argc, argv);
       } },
     { "parallel",
       [](Scene& s, int argc, char* argv[])
@@ -273,6 +334,7 @@ const std::map<std::string, SceneSetup>& Scenes()
         // queries every 4 passes and 64-pixel tiles.
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
+        s.Mapper->SetPipelineToFragment();
         s.Mapper->SetMeshLayoutToPaper();
         s.Mapper->SetTetsPerPass(1);
         s.Mapper->SetOcclusionQueryInterval(4);

@@ -146,8 +146,24 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   window->Render();
   ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "back in the first") && ok;
 
-  // Paper layout and the multi-pass scheme on the same data.
+  // The paper's layout in the compute pipeline, then the fragment pipeline on the same mapper:
+  // a switch of pipeline frees the other's per-pixel memory and draws the same picture.
   mapper->SetMeshLayoutToPaper();
+  window->Render();
+  ok =
+    trctest::CheckAgainstReference(window, renderer, volume, bounds, "compute, paper layout") && ok;
+  const vtkIdType computeTargets = mapper->GetStatistics()->GetRenderTargetBytes();
+  mapper->SetPipelineToFragment();
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "fragment, paper layout") &&
+    ok;
+  ok = Expect(mapper->GetStatistics()->GetRenderTargetBytes() > 2 * computeTargets,
+         "the compute pipeline holds less than half the fragment pipeline's target memory (" +
+           std::to_string(computeTargets) + " B against " +
+           std::to_string(mapper->GetStatistics()->GetRenderTargetBytes()) + " B)") &&
+    ok;
+
+  // Paper layout and the multi-pass scheme on the same data.
   mapper->SetTetsPerPass(2);
   mapper->SetTileSize(32);
   window->Render();

@@ -1,0 +1,128 @@
+//============================================================================
+// TiledRayCast: the walk of one ray through the mesh, shared by the fragment
+// pipeline's ray-casting passes and the compute pipeline's traversal, so that
+// both integrate every segment with the same arithmetic.
+//
+// From tet `tet` at `lambda`, entered through face `entry`, the ray goes to the
+// neighbour across the face it leaves through, integrating each segment, until
+// it leaves the mesh (TRC_WAITING: it may re-enter at a deeper boundary layer),
+// reaches opaque geometry or the far plane (TRC_DONE_DEPTH), becomes opaque
+// (TRC_DONE_OPAQUE), or has taken maximumSteps steps (TRC_ACTIVE: tet, lambda
+// and entry then say where to go on).
+//============================================================================
+
+// Steps in a row that leave a ray where it is: beyond this, the ray is caught between
+// degenerate tets and leaves the mesh where it stands (it may re-enter at the next layer).
+const int TRC_MAXIMUM_STALLS = 64;
+
+// The face of `tet` shared with `previous` (layouts that store no entry face).
+int trcSharedFace(uint previous, uvec4 neighbors)
+{
+  int entry = TRC_NO_FACE;
+  for (int f = 0; f < 4; ++f)
+  {
+    entry = neighbors[f] == previous ? f : entry;
+  }
+  return entry;
+}
+
+int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, inout int entry,
+  inout int stalls, inout vec4 color, inout int steps)
+{
+  uint previous = TRC_NO_NEIGHBOR;
+  int status = TRC_ACTIVE;
+  int taken = 0;
+  while (status == TRC_ACTIVE && taken < maximumSteps)
+  {
+    ++taken;
+    vec3 p[4];
+    vec3 n[4];
+    vec4 field;
+    trcLoadTet(tet, p, n, field);
+    uvec4 neighbors;
+    ivec4 neighborFaces;
+    trcLoadNeighbors(tet, neighbors, neighborFaces);
+    if (entry == TRC_FACE_FROM_PREVIOUS)
+    {
+      entry = trcSharedFace(previous, neighbors);
+    }
+
+    // The exit face: the nearest plane the ray leaves through, never the entry face.
+    // Distances are measured from the ray's current point, next to the tet, not from its
+    // origin on the near plane: in a flat tet, planes a few float steps apart at lambda ~ 0.5
+    // are then told apart (the wrong one skips a tet).
+    vec3 here = ray.origin + lambda * ray.dir;
+    float exitStep = 3.4e38;
+    int exitFace = -1;
+    float steepest = -3.4e38;
+    int steepestFace = 0;
+    for (int f = 0; f < 4; ++f)
+    {
+      if (f == entry)
+      {
+        continue;
+      }
+      float den = dot(n[f], ray.dir);
+      if (den > steepest)
+      {
+        steepest = den;
+        steepestFace = f;
+      }
+      if (den > 0.0)
+      {
+        float step = dot(p[trcFacePoints[f].x] - here, n[f]) / den;
+        if (step < exitStep)
+        {
+          exitStep = step;
+          exitFace = f;
+        }
+      }
+    }
+    if (exitFace < 0)
+    {
+      // No face faces away from the ray (a degenerate tet, or a ray inside a
+      // face's plane): leave through the most favourable face without moving.
+      exitFace = steepestFace;
+      exitStep = 0.0;
+    }
+    float exitLambda = lambda + max(exitStep, 0.0);
+    stalls = exitLambda > lambda ? 0 : stalls + 1;
+
+    bool stopped = exitLambda >= ray.lambdaMax;
+    float endLambda = min(exitLambda, ray.lambdaMax);
+    float sFront = dot(field.xyz, ray.origin + lambda * ray.dir) + field.w;
+    float sBack = dot(field.xyz, ray.origin + endLambda * ray.dir) + field.w;
+    trcIntegrate(sFront, sBack, (endLambda - lambda) * ray.worldScale, color);
+    lambda = endLambda;
+
+    if (color.a >= in_earlyTerminationOpacity)
+    {
+      status = TRC_DONE_OPAQUE;
+    }
+    else if (stopped)
+    {
+      status = TRC_DONE_DEPTH;
+    }
+    else if (neighbors[exitFace] == TRC_NO_NEIGHBOR || stalls > TRC_MAXIMUM_STALLS)
+    {
+      status = TRC_WAITING;
+    }
+    else
+    {
+      previous = tet;
+      tet = neighbors[exitFace];
+      entry = neighborFaces[exitFace];
+    }
+  }
+  if (status == TRC_ACTIVE && entry == TRC_FACE_FROM_PREVIOUS)
+  {
+    // The walk ends inside the mesh: resolve the entry face now, the next walk
+    // does not know where the ray came from.
+    uvec4 neighbors;
+    ivec4 neighborFaces;
+    trcLoadNeighbors(tet, neighbors, neighborFaces);
+    entry = trcSharedFace(previous, neighbors);
+  }
+  steps += taken;
+  return status;
+}

@@ -1,0 +1,454 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastComputePipeline.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastComputePipeline.h"
+
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastStatistics.h"
+#include "vtk_glew.h"
+
+#include "vtkTiledRayCastBoundaryFaceFS.h"
+#include "vtkTiledRayCastBoundaryFaceVS.h"
+#include "vtkTiledRayCastCompositeFS.h"
+#include "vtkTiledRayCastEntryList.h"
+#include "vtkTiledRayCastNearSliceFS.h"
+#include "vtkTiledRayCastNearSliceGS.h"
+#include "vtkTiledRayCastNearSliceVS.h"
+#include "vtkTiledRayCastQuadVS.h"
+#include "vtkTiledRayCastTraversalCS.h"
+#include "vtkTiledRayCastWalk.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace
+{
+// Image units and storage-buffer binding points, as declared in the GLSL.
+const unsigned int HeadsImageUnit = 0;
+const unsigned int ColorImageUnit = 1;
+const unsigned int NodesBinding = 0;
+const unsigned int EntryCountBinding = 1;
+const unsigned int RayCountsBinding = 2;
+// Words per entry node (lambda, key, link) and the traversal's workgroup side.
+const vtkIdType WordsPerEntry = 3;
+const int GroupSide = 8;
+
+// The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
+enum RayCount
+{
+  CountRays = 0,
+  CountNearPlaneRays,
+  CountTerminatedEarly,
+  CountMaximumLayers,
+  CountStepsLow,
+  CountStepsHigh,
+  CountMaximumSteps,
+  CountStopped,
+  CountEmptyGroups,
+  NumberOfRayCounts
+};
+
+std::string Substituted(
+  std::string source, const vtkTiledRayCastComputePipeline::Replacements& replacements)
+{
+  for (const auto& r : replacements)
+  {
+    vtkShaderProgram::Substitute(source, r.first, r.second, true);
+  }
+  return source;
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastComputePipeline::vtkTiledRayCastComputePipeline() = default;
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastComputePipeline::~vtkTiledRayCastComputePipeline() = default;
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkTiledRayCastComputePipeline::GetColorTexture()
+{
+  return this->Color;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::ReadyRaster(vtkOpenGLRenderWindow* window,
+  RasterProgram& program, const std::string& vs, const std::string& fs, const std::string& gs,
+  std::string& error)
+{
+  const std::string key = vs + fs + gs;
+  if (key == program.Key && program.Shader)
+  {
+    return true;
+  }
+  vtkShaderProgram* shader =
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
+  if (!shader || !shader->GetCompiled())
+  {
+    error = "A shader of the tiled ray caster's compute pipeline failed to compile or link; see "
+            "the shader log above. Nothing is drawn.";
+    program.Shader = nullptr;
+    return false;
+  }
+  if (shader != program.Shader)
+  {
+    program.Shader = shader;
+    program.VAO->ShaderProgramChanged();
+  }
+  program.Key = key;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::UpdatePrograms(
+  vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error)
+{
+  // Every program of this pipeline is GLSL 4.30 with the entry list in place of the fragment
+  // pipeline's render-target outputs.
+  Replacements replacements = common;
+  replacements.emplace_back("//TRC::Version", "#version 430 core\n#define TRC_ENTRY_LIST\n");
+  replacements.emplace_back("//TRC::EntryList::Dec", vtkTiledRayCastEntryList);
+  replacements.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
+  for (const char* tag : { "//TRC::Peel::Dec", "//TRC::Peel::Early", "//TRC::Peel::Impl" })
+  {
+    replacements.emplace_back(tag, std::string());
+  }
+  const std::string faceVS = Substituted(vtkTiledRayCastBoundaryFaceVS, replacements);
+  if (!this->ReadyRaster(window, this->FacesProgram, faceVS,
+        Substituted(vtkTiledRayCastBoundaryFaceFS, replacements), std::string(), error) ||
+    !this->ReadyRaster(window, this->NearSliceProgram,
+      Substituted(vtkTiledRayCastNearSliceVS, replacements),
+      Substituted(vtkTiledRayCastNearSliceFS, replacements),
+      Substituted(vtkTiledRayCastNearSliceGS, replacements), error) ||
+    !this->ReadyRaster(window, this->CompositeProgram,
+      Substituted(vtkTiledRayCastQuadVS, replacements),
+      Substituted(vtkTiledRayCastCompositeFS, replacements), std::string(), error))
+  {
+    return false;
+  }
+  const std::string traversal = Substituted(vtkTiledRayCastTraversalCS, replacements);
+  if (traversal != this->Traversal->GetSource() || !this->Traversal->GetHandle())
+  {
+    if (!this->Traversal->Build(traversal))
+    {
+      error = "The compute shader of the tiled ray caster failed to build (" +
+        this->Traversal->GetError() + "). Nothing is drawn.";
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::UpdateTargets(
+  vtkOpenGLRenderWindow* window, int width, int height, std::string& error)
+{
+  if (width <= this->TargetSize[0] && height <= this->TargetSize[1] &&
+    this->Framebuffer->GetFBOIndex() != 0)
+  {
+    return true;
+  }
+  width = std::max(width, this->TargetSize[0]);
+  height = std::max(height, this->TargetSize[1]);
+  // The list heads start at zero (no entry) and the traversal leaves them so: they are
+  // cleared here, at allocation, and never again.
+  const std::vector<std::uint32_t> zeros(static_cast<size_t>(width) * height, 0u);
+  vtkTextureObject* heads = this->EntryHeads;
+  heads->ReleaseGraphicsResources(window);
+  heads->SetContext(window);
+  heads->SetInternalFormat(GL_R32UI);
+  heads->SetFormat(GL_RED_INTEGER);
+  heads->SetDataType(GL_UNSIGNED_INT);
+  heads->SetMinificationFilter(vtkTextureObject::Nearest);
+  heads->SetMagnificationFilter(vtkTextureObject::Nearest);
+  bool ok = heads->Create2DFromRaw(
+    width, height, 1, VTK_UNSIGNED_INT, const_cast<std::uint32_t*>(zeros.data()));
+  vtkTextureObject* color = this->Color;
+  color->SetContext(window);
+  color->SetInternalFormat(GL_RGBA16);
+  color->SetFormat(GL_RGBA);
+  color->SetDataType(GL_UNSIGNED_SHORT);
+  color->SetMinificationFilter(vtkTextureObject::Nearest);
+  color->SetMagnificationFilter(vtkTextureObject::Nearest);
+  color->SetWrapS(vtkTextureObject::ClampToEdge);
+  color->SetWrapT(vtkTextureObject::ClampToEdge);
+  if (color->GetHandle() && color->GetWidth() > 0)
+  {
+    color->Resize(width, height);
+  }
+  else
+  {
+    ok = ok && color->Allocate2D(width, height, 4, VTK_UNSIGNED_SHORT);
+  }
+  // One entry per pixel to start with; the list grows to what views need (ListEntries).
+  ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
+  ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t)) &&
+    this->RayCounts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
+  if (!ok)
+  {
+    if (error.empty())
+    {
+      error = "Cannot allocate the compute pipeline's per-pixel buffers. Nothing is drawn.";
+    }
+    return false;
+  }
+  // The entry pass draws into this framebuffer with colour writes off: it only sets the size
+  // of the raster.
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  vtkOpenGLFramebufferObject* fbo = this->Framebuffer;
+  fbo->SetContext(window);
+  fbo->Bind();
+  fbo->AddColorAttachment(0, color);
+  fbo->ActivateDrawBuffers(1);
+  ok = fbo->CheckFrameBufferStatus(GL_FRAMEBUFFER) != 0;
+  state->PopFramebufferBindings();
+  if (!ok)
+  {
+    error = "The compute pipeline's framebuffer is incomplete on this GPU. Nothing is drawn.";
+    return false;
+  }
+  this->TargetSize[0] = width;
+  this->TargetSize[1] = height;
+  this->CountsPending = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::GrowEntries(vtkIdType needed, std::string& error)
+{
+  if (needed <= this->EntryCapacity)
+  {
+    return true;
+  }
+  // A quarter more than asked, so that a slowly changing view does not grow it every frame.
+  vtkIdType capacity = needed + needed / 4 + 4096;
+  const vtkIdType limit = 0x7FFFFFFF; // node indices + 1 fit in 31 bits
+  if (needed > limit)
+  {
+    error = "The view needs more ray entries (" + std::to_string(needed) +
+      ") than the compute pipeline can list (2^31). Nothing is drawn.";
+    return false;
+  }
+  capacity = std::min(capacity, limit);
+  if (!this->EntryNodes.Allocate(static_cast<size_t>(capacity * WordsPerEntry * 4)))
+  {
+    this->EntryCapacity = 0;
+    error = "The GPU ran out of memory for the list of ray entries (" + std::to_string(needed) +
+      " entries of 12 bytes). Nothing is drawn.";
+    return false;
+  }
+  this->EntryCapacity = capacity;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::BindBuffers()
+{
+  vtkTiledRayCastComputeShader::BindImage(
+    HeadsImageUnit, this->EntryHeads, GL_READ_WRITE, GL_R32UI);
+  vtkTiledRayCastComputeShader::BindImage(ColorImageUnit, this->Color, GL_WRITE_ONLY, GL_RGBA16);
+  this->EntryNodes.BindBase(NodesBinding);
+  this->EntryCount.BindBase(EntryCountBinding);
+  this->RayCounts.BindBase(RayCountsBinding);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::DrawEntries(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  this->EntryCount.Write(0, sizeof(std::uint32_t));
+  this->BindBuffers();
+  const int capacity = static_cast<int>(this->EntryCapacity);
+  if (frame.NearPlaneCutsMesh)
+  {
+    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
+    state->vtkglDisable(GL_CULL_FACE);
+    cache->ReadyShaderProgram(this->NearSliceProgram.Shader);
+    vtkShaderProgram* p = this->NearSliceProgram.Shader;
+    setup.SetFrameUniforms(p);
+    setup.SetMeshUniforms(p);
+    p->SetUniformi("in_entryCapacity", capacity);
+    this->NearSliceProgram.VAO->Bind();
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
+  }
+  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(frame.Mirrored ? GL_FRONT : GL_BACK);
+  cache->ReadyShaderProgram(this->FacesProgram.Shader);
+  vtkShaderProgram* p = this->FacesProgram.Shader;
+  setup.SetFrameUniforms(p);
+  setup.SetMeshUniforms(p);
+  setup.SetCoverageUniforms(p);
+  p->SetUniformi("in_entryCapacity", capacity);
+  this->FacesProgram.VAO->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
+  vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::ListEntries(const Frame& frame,
+  vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats, std::string& error)
+{
+  vtkOpenGLState* state = frame.Window->GetState();
+  state->PushDrawFramebufferBinding();
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+
+  bool ok = true;
+  for (int attempt = 0; attempt < 2; ++attempt)
+  {
+    this->DrawEntries(frame, setup);
+    // The one result of this frame the CPU waits for: whether the list held every entry.
+    std::uint32_t entries = 0;
+    this->EntryCount.Read(0, sizeof(entries), &entries);
+    this->LastEntries = entries;
+    if (entries <= this->EntryCapacity)
+    {
+      break;
+    }
+    // Too short for this view: grow, empty the lists (the traversal in its reset mode) and
+    // draw the entries again. The second attempt always fits.
+    if (!this->GrowEntries(entries, error))
+    {
+      ok = false;
+    }
+    Frame reset = frame;
+    reset.MaximumSteps = -1;
+    this->Traverse(reset, setup);
+    if (!ok)
+    {
+      break;
+    }
+  }
+  // Everything before this frame's entries is done by now: the previous frame's counts cost
+  // nothing to read.
+  if (this->CountsPending)
+  {
+    this->ReadCountsInto(stats);
+  }
+  stats->SetNumberOfEntries(this->LastEntries);
+  state->PopDrawFramebufferBinding();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::Traverse(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+{
+  const bool resetOnly = frame.MaximumSteps < 0;
+  if (!resetOnly)
+  {
+    this->RayCounts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
+  }
+  vtkTiledRayCastComputeShader* traversal = this->Traversal;
+  traversal->Use(frame.Window);
+  setup.SetFrameUniforms(traversal);
+  setup.SetMeshUniforms(traversal);
+  setup.SetIntegrationUniforms(traversal);
+  const int size[2] = { frame.Width, frame.Height };
+  traversal->SetUniform2i("in_imageSize", size);
+  traversal->SetUniformi("in_maximumSteps", std::max(frame.MaximumSteps, 0));
+  traversal->SetUniformf("in_peelEpsilon", frame.PeelEpsilon);
+  traversal->SetUniformi("in_resetOnly", resetOnly ? 1 : 0);
+  traversal->SetUniformi("in_entryCapacity", static_cast<int>(this->EntryCapacity));
+  this->BindBuffers();
+  traversal->Dispatch(
+    (frame.Width + GroupSide - 1) / GroupSide, (frame.Height + GroupSide - 1) / GroupSide);
+  vtkTiledRayCastComputeShader::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT |
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT);
+  vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
+  vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
+  this->CountsPending = !resetOnly;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
+{
+  frame.Window->GetShaderCache()->ReadyShaderProgram(this->CompositeProgram.Shader);
+  vtkShaderProgram* p = this->CompositeProgram.Shader;
+  p->SetUniformi("in_color", this->Color->GetTextureUnit());
+  p->SetUniform2f("in_viewportOrigin", frame.ViewportOrigin);
+  const float rectangle[4] = { -1.f, -1.f, 1.f, 1.f };
+  p->SetUniform4f("in_rectangle", rectangle);
+  p->SetUniformf("in_rectangleDepth", 0.f);
+  this->CompositeProgram.VAO->Bind();
+  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats)
+{
+  if (this->CountsPending)
+  {
+    this->ReadCountsInto(stats);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ReadCountsInto(vtkTiledRayCastStatistics* stats)
+{
+  std::uint32_t counts[NumberOfRayCounts];
+  this->RayCounts.Read(0, sizeof(counts), counts);
+  this->CountsPending = false;
+  stats->SetNumberOfRays(counts[CountRays]);
+  stats->SetNumberOfNearPlaneRays(counts[CountNearPlaneRays]);
+  stats->SetNumberOfRaysTerminatedEarly(counts[CountTerminatedEarly]);
+  stats->SetNumberOfLayers(static_cast<int>(counts[CountMaximumLayers]));
+  stats->SetNumberOfSteps(static_cast<vtkIdType>(
+    (static_cast<std::uint64_t>(counts[CountStepsHigh]) << 32) | counts[CountStepsLow]));
+  stats->SetMaximumStepsPerRay(counts[CountMaximumSteps]);
+  stats->SetNumberOfTilesSkipped(static_cast<int>(counts[CountEmptyGroups]));
+  this->RaysStopped = counts[CountStopped];
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkTiledRayCastComputePipeline::GetTargetBytes() const
+{
+  // List heads (4 B) and colour (8 B) per pixel of the targets, and the entry list.
+  return static_cast<vtkIdType>(this->TargetSize[0]) * this->TargetSize[1] * (4 + 8) +
+    this->EntryCapacity * WordsPerEntry * 4;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (RasterProgram* p : { &this->FacesProgram, &this->NearSliceProgram, &this->CompositeProgram })
+  {
+    p->Shader = nullptr;
+    p->VAO->ReleaseGraphicsResources();
+    p->Key.clear();
+  }
+  this->Traversal->ReleaseProgram();
+  this->EntryHeads->ReleaseGraphicsResources(window);
+  this->Color->ReleaseGraphicsResources(window);
+  this->Framebuffer->ReleaseGraphicsResources(window);
+  this->EntryNodes.ReleaseGraphicsResources();
+  this->EntryCount.ReleaseGraphicsResources();
+  this->RayCounts.ReleaseGraphicsResources();
+  this->EntryCapacity = 0;
+  this->TargetSize[0] = this->TargetSize[1] = 0;
+  this->CountsPending = false;
+}

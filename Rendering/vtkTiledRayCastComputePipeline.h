@@ -1,0 +1,191 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastComputePipeline.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastComputePipeline
+ * @brief   the mapper's compute pipeline: entry lists, one traversal dispatch, one composite
+ *
+ * On GPUs whose graphics pipe is a small corner of the chip (the H100 and H200 run fragment
+ * shaders on 4 of their 132 multiprocessors), the paper's fragment passes leave most of the
+ * GPU idle. This pipeline keeps one raster pass, over the boundary faces only, and moves the
+ * rest to an OpenGL 4.3 compute dispatch that runs on every multiprocessor:
+ *
+ * 1. ListEntries: the boundary faces (front faces, with the exact-coverage test of the
+ *    fragment pipeline) and, where the near plane cuts the mesh, the near-plane slices are
+ *    rasterised once; every fragment appends (lambda, tet and face) to its pixel's list. This
+ *    replaces the first hit and every depth-peeling pass. The list buffer grows to what the
+ *    view needs: the CPU reads the number of entries (4 bytes) after this pass, and where the
+ *    buffer was too short it grows and the pass is drawn again.
+ * 2. Traverse: one invocation per pixel (8x8 workgroups) takes its entries in depth order and
+ *    walks the ray through every layer, with the same walk (vtkTiledRayCastWalk.glsl) and the
+ *    same peeling rules as the fragment pipeline. The ray state stays in registers; the colour
+ *    is written once (RGBA16); the list heads are reset for the next frame as they are read, so
+ *    nothing is cleared. The GPU counts rays, steps, layers and terminations per workgroup.
+ * 3. Composite: one light full-screen pass blends the colour into VTK's framebuffer.
+ *
+ * Target memory per pixel: a list head (4 B), the colour (8 B) and 12 B per entry (one per
+ * pixel and boundary layer).
+ *
+ * The mapper sets the frame's, the mesh's and the integration's uniforms through
+ * vtkTiledRayCastProgramSetup, on the raster programs and on the compute program alike.
+ * Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastComputePipeline_h
+#define vtkTiledRayCastComputePipeline_h
+
+#include "vtkNew.h"                       // For vtkNew
+#include "vtkTiledRayCastStorageBuffer.h" // For the storage buffers
+#include "vtkType.h"                      // For vtkIdType
+
+#include <string>  // For std::string
+#include <utility> // For std::pair
+#include <vector>  // For std::vector
+
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkOpenGLVertexArrayObject;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkTiledRayCastComputeShader;
+class vtkTiledRayCastStatistics;
+class vtkWindow;
+
+/**
+ * What a pipeline needs from the mapper to run a program: the uniforms of the frame (rays,
+ * opaque depth), of the mesh textures, of the exact-coverage test and of the integration.
+ */
+class vtkTiledRayCastProgramSetup
+{
+public:
+  virtual ~vtkTiledRayCastProgramSetup() = default;
+  virtual void SetFrameUniforms(vtkShaderProgram* program) = 0;
+  virtual void SetMeshUniforms(vtkShaderProgram* program) = 0;
+  virtual void SetCoverageUniforms(vtkShaderProgram* program) = 0;
+  virtual void SetIntegrationUniforms(vtkShaderProgram* program) = 0;
+};
+
+class vtkTiledRayCastComputePipeline
+{
+public:
+  vtkTiledRayCastComputePipeline();
+  ~vtkTiledRayCastComputePipeline();
+
+  using Replacements = std::vector<std::pair<std::string, std::string>>;
+
+  /**
+   * Build (or keep) the programs from the mapper's GLSL pieces: `common` replaces
+   * //TRC::Common::Dec, //TRC::Layout::Dec and //TRC::Integration::Dec. False with a message
+   * when a program does not compile.
+   */
+  bool UpdatePrograms(
+    vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error);
+
+  /**
+   * Per-pixel targets for an image of this size (they only grow). False with a message when
+   * the GPU cannot allocate them.
+   */
+  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height, std::string& error);
+
+  /**
+   * What one frame draws.
+   */
+  struct Frame
+  {
+    vtkOpenGLRenderWindow* Window = nullptr;
+    int Width = 0;
+    int Height = 0;
+    vtkIdType NumberOfBoundaryFaces = 0;
+    vtkIdType NumberOfTetrahedra = 0;
+    bool NearPlaneCutsMesh = false;
+    bool Mirrored = false;
+    int MaximumSteps = 0;
+    float PeelEpsilon = 0;
+    float ViewportOrigin[2] = { 0, 0 };
+  };
+
+  /**
+   * Phase 1, into the pipeline's own framebuffer (the caller has pushed the framebuffer
+   * bindings and set the viewport to the image). Reads, as the one GPU result it waits for,
+   * the number of entries; also the counts of the previous frame, which are ready by then.
+   * False with a message when the list cannot grow to what the view needs.
+   */
+  bool ListEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
+    vtkTiledRayCastStatistics* stats, std::string& error);
+
+  /**
+   * Phase 2: the traversal dispatch.
+   */
+  void Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
+
+  /**
+   * Phase 3, into the caller's framebuffer, viewport and blending (premultiplied colour).
+   */
+  void Composite(const Frame& frame);
+
+  /**
+   * Wait for this frame's counts and put them in the statistics (SynchronousStatistics).
+   */
+  void ReadCounts(vtkTiledRayCastStatistics* stats);
+
+  /**
+   * Rays that reached the step bound in one layer in the latest counts read (a mesh whose
+   * neighbour links loop): the mapper warns.
+   */
+  vtkIdType GetNumberOfRaysStopped() const { return this->RaysStopped; }
+
+  /**
+   * The colour texture the traversal writes (the mapper activates it for compositing).
+   */
+  vtkTextureObject* GetColorTexture();
+
+  /**
+   * GPU memory of the per-pixel targets and the entry list, in bytes.
+   */
+  vtkIdType GetTargetBytes() const;
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkTiledRayCastComputePipeline(const vtkTiledRayCastComputePipeline&) = delete;
+  void operator=(const vtkTiledRayCastComputePipeline&) = delete;
+
+  struct RasterProgram
+  {
+    vtkShaderProgram* Shader = nullptr; // owned by the window's shader cache
+    vtkNew<vtkOpenGLVertexArrayObject> VAO;
+    std::string Key;
+  };
+  bool ReadyRaster(vtkOpenGLRenderWindow* window, RasterProgram& program, const std::string& vs,
+    const std::string& fs, const std::string& gs, std::string& error);
+  void DrawEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
+  void BindBuffers();
+  bool GrowEntries(vtkIdType needed, std::string& error);
+  void ReadCountsInto(vtkTiledRayCastStatistics* stats);
+
+  RasterProgram FacesProgram;
+  RasterProgram NearSliceProgram;
+  RasterProgram CompositeProgram;
+  vtkNew<vtkTiledRayCastComputeShader> Traversal;
+
+  vtkNew<vtkTextureObject> EntryHeads;
+  vtkNew<vtkTextureObject> Color;
+  vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
+  vtkTiledRayCastStorageBuffer EntryNodes;
+  vtkTiledRayCastStorageBuffer EntryCount;
+  vtkTiledRayCastStorageBuffer RayCounts;
+  vtkIdType EntryCapacity = 0;
+  int TargetSize[2] = { 0, 0 };
+  bool CountsPending = false;
+  vtkIdType LastEntries = 0;
+  vtkIdType RaysStopped = 0;
+};
+
+#endif

@@ -1,0 +1,79 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastStorageBuffer.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastStorageBuffer.h"
+
+#include "vtk_glew.h"
+
+#include <vector>
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastStorageBuffer::Allocate(size_t bytes)
+{
+  if (!this->Handle)
+  {
+    glGenBuffers(1, &this->Handle);
+  }
+  // Errors left by earlier calls are not this allocation's.
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    this->ReleaseGraphicsResources();
+    return false;
+  }
+  this->Size = bytes;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::BindBase(unsigned int index) const
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, this->Handle);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::Write(size_t offset, size_t bytes, const void* data)
+{
+  std::vector<unsigned char> zeros;
+  if (!data)
+  {
+    zeros.assign(bytes, 0);
+    data = zeros.data();
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
+  glBufferSubData(
+    GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::Read(size_t offset, size_t bytes, void* data) const
+{
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
+  glGetBufferSubData(
+    GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::ReleaseGraphicsResources()
+{
+  if (this->Handle)
+  {
+    glDeleteBuffers(1, &this->Handle);
+  }
+  this->Handle = 0;
+  this->Size = 0;
+}

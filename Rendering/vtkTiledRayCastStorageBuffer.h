@@ -1,0 +1,69 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastStorageBuffer.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastStorageBuffer
+ * @brief   an OpenGL shader storage buffer: allocate, bind, clear, read back
+ *
+ * VTK 9.1's vtkOpenGLBufferObject knows array, element and texture buffers and uploads whole
+ * arrays only; the compute pipeline needs buffers that shaders write, that are bound to
+ * indexed storage-buffer binding points, zeroed in part every frame without a new allocation,
+ * and read back in part. The raw GL for that is here, in one small class.
+ *
+ * Needs a current OpenGL 4.3 context. Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastStorageBuffer_h
+#define vtkTiledRayCastStorageBuffer_h
+
+#include <cstddef> // For size_t
+
+class vtkTiledRayCastStorageBuffer
+{
+public:
+  vtkTiledRayCastStorageBuffer() = default;
+  ~vtkTiledRayCastStorageBuffer() = default;
+
+  /**
+   * (Re)allocate to this many bytes, contents undefined; false when the GPU is out of memory.
+   */
+  bool Allocate(size_t bytes);
+  size_t GetSize() const { return this->Size; }
+
+  /**
+   * Bind to storage-buffer binding point `index`.
+   */
+  void BindBase(unsigned int index) const;
+
+  /**
+   * Write `bytes` bytes at `offset` (zeros when data is null).
+   */
+  void Write(size_t offset, size_t bytes, const void* data = nullptr);
+
+  /**
+   * Read `bytes` bytes at `offset`, waiting for the GPU's writes (issue a buffer-update
+   * barrier first).
+   */
+  void Read(size_t offset, size_t bytes, void* data) const;
+
+  /**
+   * Delete the GL buffer (the context must be current).
+   */
+  void ReleaseGraphicsResources();
+
+private:
+  vtkTiledRayCastStorageBuffer(const vtkTiledRayCastStorageBuffer&) = delete;
+  void operator=(const vtkTiledRayCastStorageBuffer&) = delete;
+
+  unsigned int Handle = 0;
+  size_t Size = 0;
+};
+
+#endif
