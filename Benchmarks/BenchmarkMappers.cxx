@@ -17,15 +17,21 @@
 //     --frames F        timed frames per setting, along a full turn of the camera (default 12)
 //     --csv FILE        append rows to FILE (default: standard output); a header when new
 //     --ours-only       only our default setting (the scaling runs on the dataset ladder)
-//     --sweep quick|full|defaults  our settings (default quick); "defaults" times only ours,
-//                       over tile sizes, tets per pass and occlusion-query intervals
+//     --sweep quick|full|defaults|pipelines  our settings (default quick); "defaults" times
+//                       only ours, over the fragment pipeline's tile sizes, tets per pass and
+//                       occlusion-query intervals; "pipelines" only ours, each pipeline's default
+//     --no-others       leave VTK's mappers out
 //     --zsweep-max-tets T  ZSweep only up to T tets and 512 px (default 300000)
 //     --resample R,R,.. resampling resolutions for resample + GPU ray cast (default 64,128,256)
 //     --no-reference    skip the exact reference (error columns stay empty)
 //
 // Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own;
-// then F frames, each Render() followed by glFinish (WaitForCompletion), wall clock and GPU
-// timer; the error is measured on the first view against vtkTetReferenceRenderer's exact image.
+// then, after half a second of warm-up frames, F frames, each Render() followed by glFinish
+// (WaitForCompletion), wall clock and GPU timer; the error is measured on the first view against
+// vtkTetReferenceRenderer's exact image. Our rows also hold the median GPU time of each phase (the
+// mapper's statistics, with SynchronousStatistics on), the rays, the tets each walked and the
+// per-pixel target memory. Settings of ours are named by pipeline; each pipeline's default setting
+// is "compute default" and "fragment default".
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -74,6 +80,7 @@ struct Options
   int Frames = 12;
   std::string Csv;
   bool OursOnly = false;
+  bool Others = true;
   std::string Sweep = "quick"; // quick, full or defaults
   vtkIdType ZSweepMaxTets = 300000;
   std::vector<int> Resample = { 64, 128, 256 };
@@ -90,12 +97,17 @@ struct Row
   double MedianMs = NAN, MinMs = NAN, GpuMedianMs = NAN, FirstFrameMs = NAN, ResampleMs = NAN,
          TetsPerS = NAN, GpuBytesPerTet = NAN, Rmse = NAN, P999 = NAN, MaxErr = NAN,
          LostPixels = NAN, Layers = NAN, MedianPasses = NAN, MaxPasses = NAN;
+  std::string Pipeline;
+  double FirstHitMs = NAN, PeelingMs = NAN, RayCastingMs = NAN, CompositingMs = NAN, Rays = NAN,
+         MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN;
 };
 
 const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
                      "gpu_median_ms,first_frame_ms,resample_ms,tets_per_s,gpu_bytes_per_tet,"
                      "rmse,p999,max_err,lost_pixels,layers,median_passes_per_tile,"
-                     "max_passes_per_tile";
+                     "max_passes_per_tile,pipeline,first_hit_ms,peeling_ms,ray_casting_ms,"
+                     "compositing_ms,rays,mean_steps_per_ray,max_steps_per_ray,entries,"
+                     "target_bytes_per_pixel";
 
 std::string Cell(double v)
 {
@@ -116,7 +128,10 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.GpuMedianMs) << "," << Cell(r.FirstFrameMs) << "," << Cell(r.ResampleMs) << ","
      << Cell(r.TetsPerS) << "," << Cell(r.GpuBytesPerTet) << "," << Cell(r.Rmse) << ","
      << Cell(r.P999) << "," << Cell(r.MaxErr) << "," << Cell(r.LostPixels) << "," << Cell(r.Layers)
-     << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "\n";
+     << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "," << r.Pipeline << ","
+     << Cell(r.FirstHitMs) << "," << Cell(r.PeelingMs) << "," << Cell(r.RayCastingMs) << ","
+     << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
+     << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << "\n";
 }
 
 double Median(std::vector<double> v)
@@ -217,14 +232,19 @@ struct Setting
 std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
 {
   std::vector<Setting> settings;
+  using M = vtkTiledRayCastVolumeMapper;
   auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
                 int queryInterval = 4)
   {
+    // "compute ..." settings run the compute pipeline, the others the fragment pipeline.
+    const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
     settings.push_back({ "ours", name,
       [=](double&)
       {
         auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
         m->SetInputData(grid);
+        m->SetPipeline(pipeline);
+        m->SynchronousStatisticsOn();
         m->SetIntegrationMode(mode);
         m->SetMeshLayout(layout);
         m->SetTetsPerPass(n);
@@ -238,7 +258,6 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
         return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
       } });
   };
-  using M = vtkTiledRayCastVolumeMapper;
   if (o.Sweep == "defaults")
   {
     // The choice of defaults: tile size with one unlimited pass per layer, then the paper's
@@ -246,36 +265,46 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     const int p = M::PARTIAL_PRE_INTEGRATION, c = M::COMPACT_LAYOUT;
     for (int tile : { 64, 128, 256, 512, 0 })
     {
-      ours("partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p, c, 0,
-        tile, 0);
+      ours("fragment partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p,
+        c, 0, tile, 0);
     }
     for (int n : { 1, 4, 16, 64 })
     {
-      ours("partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4);
+      ours("fragment partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4);
     }
-    ours("partial compact N16 T256 K1", p, c, 16, 256, 0, 1);
-    ours("partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
+    ours("fragment partial compact N16 T256 K1", p, c, 16, 256, 0, 1);
+    ours("fragment partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
     return settings;
   }
-  ours("partial compact N0 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 256, 0);
+  const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
+  ours("compute default", partial, compact, 0, 256, 0);
   if (o.OursOnly)
   {
     return settings;
   }
-  ours("partial compact N0 T64", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 64, 0);
-  ours("partial compact N0 T128", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 128, 0);
-  ours("partial compact N16 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 16, 256, 0);
-  ours("partial paper N0 T256", M::PARTIAL_PRE_INTEGRATION, M::PAPER_LAYOUT, 0, 256, 0);
-  ours("table3d compact N0 T256", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 256, 0);
-  ours("table2d compact N0 T256", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 256, 0);
+  ours("fragment default", partial, compact, 0, 256, 0);
+  if (o.Sweep != "pipelines")
+  {
+    ours("compute partial paper", partial, M::PAPER_LAYOUT, 0, 256, 0);
+    ours("compute table3d compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
+    ours("compute table2d compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
+    ours("fragment partial compact N16 T256", partial, compact, 16, 256, 0);
+    ours("fragment partial paper N0 T256", partial, M::PAPER_LAYOUT, 0, 256, 0);
+  }
   if (o.Sweep == "full")
   {
-    ours("partial compact N4 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 4, 256, 0);
-    ours("partial compact N64 T256", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 64, 256, 0);
-    ours("partial compact N0 T32", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 32, 0);
-    ours("partial compact N0 Tall", M::PARTIAL_PRE_INTEGRATION, M::COMPACT_LAYOUT, 0, 0, 0);
-    ours("table3d64 compact N0 T256", M::PRE_INTEGRATION_3D, M::COMPACT_LAYOUT, 0, 256, 64);
-    ours("table2d64 compact N0 T256", M::PRE_INTEGRATION_2D, M::COMPACT_LAYOUT, 0, 256, 64);
+    ours("fragment partial compact N0 T64", partial, compact, 0, 64, 0);
+    ours("fragment partial compact N0 T128", partial, compact, 0, 128, 0);
+    ours("fragment table3d compact N0 T256", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
+    ours("fragment table2d compact N0 T256", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
+    ours("fragment partial compact N4 T256", partial, compact, 4, 256, 0);
+    ours("fragment partial compact N64 T256", partial, compact, 64, 256, 0);
+    ours("compute table3d64 compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 64);
+    ours("compute table2d64 compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 64);
+  }
+  if (!o.Others)
+  {
+    return settings;
   }
 
   settings.push_back({ "projected_tetrahedra", "default",
@@ -368,12 +397,15 @@ int main(int argc, char* argv[])
       o.Csv = next();
     else if (a == "--ours-only")
       o.OursOnly = true;
+    else if (a == "--no-others")
+      o.Others = false;
     else if (a == "--sweep")
     {
       o.Sweep = next();
-      if (o.Sweep != "quick" && o.Sweep != "full" && o.Sweep != "defaults")
+      if (o.Sweep != "quick" && o.Sweep != "full" && o.Sweep != "defaults" &&
+        o.Sweep != "pipelines")
       {
-        std::cerr << "--sweep takes quick, full or defaults\n";
+        std::cerr << "--sweep takes quick, full, defaults or pipelines\n";
         return EXIT_FAILURE;
       }
     }
@@ -514,7 +546,25 @@ int main(int argc, char* argv[])
           row.LostPixels = e.Lost;
         }
 
+        // Warm-up along the same path until half a second has passed: a GPU left idle while
+        // the CPU computed the reference lowers its clocks, and short frames would be timed
+        // before they rise again.
+        timer->StartTimer();
+        for (int f = 0; f < 1000; ++f)
+        {
+          SetView(renderer, grid, f, o.Frames);
+          window->Render();
+          window->WaitForCompletion();
+          timer->StopTimer();
+          if (f >= 1 && timer->GetElapsedTime() > 0.5)
+          {
+            break;
+          }
+        }
+
         std::vector<double> wall, gpu;
+        std::vector<double> phases[4], steps;
+        auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
         vtkOpenGLRenderTimer timerObject; // not a vtkObject
         vtkOpenGLRenderTimer* gpuTimer = &timerObject;
         for (int f = 0; f < o.Frames; ++f)
@@ -532,6 +582,15 @@ int main(int argc, char* argv[])
           {
             gpu.push_back(gpuTimer->GetElapsedMilliseconds());
           }
+          if (ours)
+          {
+            vtkTiledRayCastStatistics* stats = ours->GetStatistics();
+            phases[0].push_back(stats->GetFirstHitTime());
+            phases[1].push_back(stats->GetPeelingTime());
+            phases[2].push_back(stats->GetRayCastingTime());
+            phases[3].push_back(stats->GetCompositingTime());
+            steps.push_back(stats->GetMeanStepsPerRay());
+          }
         }
         gpuTimer->ReleaseGraphicsResources();
         row.MedianMs = Median(wall);
@@ -539,13 +598,26 @@ int main(int argc, char* argv[])
         row.GpuMedianMs = Median(gpu);
         row.TetsPerS = row.Tets / (row.MedianMs / 1000.0);
 
-        if (auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper))
+        if (ours)
         {
           vtkTiledRayCastStatistics* stats = ours->GetStatistics();
           row.GpuBytesPerTet = double(stats->GetTotalGPUBytes()) / row.Tets;
           row.Layers = stats->GetNumberOfLayers();
           row.MedianPasses = stats->GetMedianPassesPerTile();
           row.MaxPasses = stats->GetMaximumPassesPerTile();
+          row.Pipeline = stats->GetPipeline() ? stats->GetPipeline() : "";
+          row.FirstHitMs = Median(phases[0]);
+          row.PeelingMs = Median(phases[1]);
+          row.RayCastingMs = Median(phases[2]);
+          row.CompositingMs = Median(phases[3]);
+          row.Rays = static_cast<double>(stats->GetNumberOfRays());
+          if (row.Pipeline == "Compute") // the fragment pipeline counts no steps or entries
+          {
+            row.MeanSteps = Median(steps);
+            row.MaxSteps = static_cast<double>(stats->GetMaximumStepsPerRay());
+            row.Entries = static_cast<double>(stats->GetNumberOfEntries());
+          }
+          row.TargetBytesPerPixel = double(stats->GetRenderTargetBytes()) / (double(size) * size);
           if (!stats->GetRendered())
           {
             std::cerr << scene << " " << setting.Name << ": nothing rendered\n";

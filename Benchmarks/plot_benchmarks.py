@@ -2,7 +2,7 @@
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Benchmarks/plot_benchmarks.py \
         results.csv --output-dir plots [--title-suffix "GPU: NVIDIA H100"] \
-        [--default-setting "partial compact N0 T256"]
+        [--default-setting "compute default"]
 
 With the tiledraycast module importable no X display is needed (its EGL window is used);
 without it VTK's X window needs one: ``xvfb-run -a /usr/bin/python3 Benchmarks/...``.
@@ -305,7 +305,7 @@ def main():
     parser.add_argument("csv", help="benchmark results (one row per scene/mapper/setting/size)")
     parser.add_argument("--output-dir", required=True, help="where the PNGs and markdown go")
     parser.add_argument("--title-suffix", default="", help='e.g. "GPU: NVIDIA H100"')
-    parser.add_argument("--default-setting", default="partial compact N0 T256",
+    parser.add_argument("--default-setting", default="compute default",
                         help="setting of ours shown in the scaling chart")
     args = parser.parse_args()
     if not HEADLESS and not os.environ.get("DISPLAY"):

@@ -5,10 +5,11 @@
 # On the GPU machine, through the bundle (Module/bundle-gpu.sh, then on the device):
 #   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
-# "defaults" times our settings only, over tile size, tets per pass and query interval.
+# "defaults" times our settings only, over tile size, tets per pass and query interval;
+# "pipelines" our two pipelines only, each at its default.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu, defaults or ladder}"
+kind="${1:?cpu, gpu, pipelines, defaults or ladder}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -33,6 +34,18 @@ case "$kind" in
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
     "$bench" --size 1024 --frames 10 --csv "$out/results.csv" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  pipelines)
+    # Our two pipelines only, each at its default, on the GPU meshes at 1024² and torus_1m at
+    # 2048²: the quick check of the compute pipeline's speed, phase by phase.
+    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    "$bench" --sweep pipelines --no-others --size 1024 --frames 10 --csv "$out/results.csv" \
+      "$meshes/box5_tets.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
+      "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
+    "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 10 \
+      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;

@@ -478,21 +478,20 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
 
-  std::string error;
-  this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
-  bool ok;
   {
     ScopedDebugEvent event("ListEntries");
-    ok = this->Compute.ListEntries(frame, *this, stats, error);
+    this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
+    this->Compute.ListEntries(frame, *this);
+    this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
   }
-  this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
-  if (ok)
   {
     ScopedDebugEvent event("Traverse");
     this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
-    this->Compute.Traverse(frame, *this);
+    this->Compute.Traverse(frame, *this, stats);
     this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
   }
+  std::string error;
+  const bool ok = this->Compute.FinishEntries(frame, *this, stats, error);
 
   // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
   vtkOpenGLState* state = window->GetState();

@@ -196,8 +196,11 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   // One entry per pixel to start with; the list grows to what views need (ListEntries).
   ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
-  ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t)) &&
-    this->RayCounts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
+  ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t));
+  for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
+  {
+    ok = ok && counts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
+  }
   if (!ok)
   {
     if (error.empty())
@@ -224,7 +227,7 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   this->TargetSize[0] = width;
   this->TargetSize[1] = height;
-  this->CountsPending = false;
+  this->CountsPending[0] = this->CountsPending[1] = false;
   return true;
 }
 
@@ -264,16 +267,23 @@ void vtkTiledRayCastComputePipeline::BindBuffers()
   vtkTiledRayCastComputeShader::BindImage(ColorImageUnit, this->Color, GL_WRITE_ONLY, GL_RGBA16);
   this->EntryNodes.BindBase(NodesBinding);
   this->EntryCount.BindBase(EntryCountBinding);
-  this->RayCounts.BindBase(RayCountsBinding);
+  this->RayCounts[this->CountsBuffer].BindBase(RayCountsBinding);
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::DrawEntries(
+void vtkTiledRayCastComputePipeline::ListEntries(
   const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  state->PushDrawFramebufferBinding();
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+
   this->EntryCount.Write(0, sizeof(std::uint32_t));
   this->BindBuffers();
   const int capacity = static_cast<int>(this->EntryCapacity);
@@ -302,66 +312,46 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
   vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-}
-
-//------------------------------------------------------------------------------
-bool vtkTiledRayCastComputePipeline::ListEntries(const Frame& frame,
-  vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats, std::string& error)
-{
-  vtkOpenGLState* state = frame.Window->GetState();
-  state->PushDrawFramebufferBinding();
-  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  vtkOpenGLState::ScopedglColorMask colorMask(state);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-
-  bool ok = true;
-  for (int attempt = 0; attempt < 2; ++attempt)
-  {
-    this->DrawEntries(frame, setup);
-    // The one result of this frame the CPU waits for: whether the list held every entry.
-    std::uint32_t entries = 0;
-    this->EntryCount.Read(0, sizeof(entries), &entries);
-    this->LastEntries = entries;
-    if (entries <= this->EntryCapacity)
-    {
-      break;
-    }
-    // Too short for this view: grow, empty the lists (the traversal in its reset mode) and
-    // draw the entries again. The second attempt always fits.
-    if (!this->GrowEntries(entries, error))
-    {
-      ok = false;
-    }
-    Frame reset = frame;
-    reset.MaximumSteps = -1;
-    this->Traverse(reset, setup);
-    if (!ok)
-    {
-      break;
-    }
-  }
-  // Everything before this frame's entries is done by now: the previous frame's counts cost
-  // nothing to read.
-  if (this->CountsPending)
-  {
-    this->ReadCountsInto(stats);
-  }
-  stats->SetNumberOfEntries(this->LastEntries);
   state->PopDrawFramebufferBinding();
-  return ok;
 }
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::Traverse(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats)
+{
+  // The previous frame's counts if they have arrived, else the older ones in the other buffer
+  // (waiting for them holds the CPU at most two frames ahead of the GPU), which this frame
+  // then writes over.
+  const int last = this->CountsBuffer;
+  const int next = 1 - last;
+  bool read = false;
+  if (this->CountsPending[last] && this->RayCounts[last].IsWritten(false))
+  {
+    this->ReadCountsInto(last, stats);
+    read = true;
+  }
+  if (this->CountsPending[next])
+  {
+    if (read)
+    {
+      this->CountsPending[next] = false; // older than what was just read
+    }
+    else
+    {
+      this->RayCounts[next].IsWritten(true);
+      this->ReadCountsInto(next, stats);
+    }
+  }
+  this->CountsBuffer = next;
+  this->Dispatch(frame, setup);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::Dispatch(
   const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
-  const bool resetOnly = frame.MaximumSteps < 0;
-  if (!resetOnly)
-  {
-    this->RayCounts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
-  }
+  vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
+  counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
   vtkTiledRayCastComputeShader* traversal = this->Traversal;
   traversal->Use(frame.Window);
   setup.SetFrameUniforms(traversal);
@@ -369,10 +359,8 @@ void vtkTiledRayCastComputePipeline::Traverse(
   setup.SetIntegrationUniforms(traversal);
   const int size[2] = { frame.Width, frame.Height };
   traversal->SetUniform2i("in_imageSize", size);
-  traversal->SetUniformi("in_maximumSteps", std::max(frame.MaximumSteps, 0));
+  traversal->SetUniformi("in_maximumSteps", frame.MaximumSteps);
   traversal->SetUniformf("in_peelEpsilon", frame.PeelEpsilon);
-  traversal->SetUniformi("in_resetOnly", resetOnly ? 1 : 0);
-  traversal->SetUniformi("in_entryCapacity", static_cast<int>(this->EntryCapacity));
   this->BindBuffers();
   traversal->Dispatch(
     (frame.Width + GroupSide - 1) / GroupSide, (frame.Height + GroupSide - 1) / GroupSide);
@@ -381,9 +369,32 @@ void vtkTiledRayCastComputePipeline::Traverse(
     GL_SHADER_STORAGE_BARRIER_BIT);
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
-  this->CountsPending = !resetOnly;
+  counts.MarkWritten();
+  this->CountsPending[this->CountsBuffer] = true;
 }
 
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
+  vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats, std::string& error)
+{
+  // Waits for the entry pass only: the traversal queued after it goes on meanwhile.
+  std::uint32_t entries = 0;
+  this->EntryCount.Read(0, sizeof(entries), &entries);
+  if (entries > this->EntryCapacity)
+  {
+    // The list was too short for this view, and the traversal missed entries (it has emptied
+    // the lists all the same): grow, then list and walk again. The second time always fits.
+    if (!this->GrowEntries(entries, error))
+    {
+      return false;
+    }
+    this->ListEntries(frame, setup);
+    this->Dispatch(frame, setup);
+    this->EntryCount.Read(0, sizeof(entries), &entries);
+  }
+  stats->SetNumberOfEntries(entries);
+  return true;
+}
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
 {
@@ -401,18 +412,19 @@ void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats)
 {
-  if (this->CountsPending)
+  if (this->CountsPending[this->CountsBuffer])
   {
-    this->ReadCountsInto(stats);
+    this->RayCounts[this->CountsBuffer].IsWritten(true);
+    this->ReadCountsInto(this->CountsBuffer, stats);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::ReadCountsInto(vtkTiledRayCastStatistics* stats)
+void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats)
 {
   std::uint32_t counts[NumberOfRayCounts];
-  this->RayCounts.Read(0, sizeof(counts), counts);
-  this->CountsPending = false;
+  this->RayCounts[buffer].Read(0, sizeof(counts), counts);
+  this->CountsPending[buffer] = false;
   stats->SetNumberOfRays(counts[CountRays]);
   stats->SetNumberOfNearPlaneRays(counts[CountNearPlaneRays]);
   stats->SetNumberOfRaysTerminatedEarly(counts[CountTerminatedEarly]);
@@ -447,8 +459,11 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->EntryNodes.ReleaseGraphicsResources();
   this->EntryCount.ReleaseGraphicsResources();
-  this->RayCounts.ReleaseGraphicsResources();
+  for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
+  {
+    counts.ReleaseGraphicsResources();
+  }
   this->EntryCapacity = 0;
   this->TargetSize[0] = this->TargetSize[1] = 0;
-  this->CountsPending = false;
+  this->CountsPending[0] = this->CountsPending[1] = false;
 }

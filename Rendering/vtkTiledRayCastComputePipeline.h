@@ -20,15 +20,21 @@
  * 1. ListEntries: the boundary faces (front faces, with the exact-coverage test of the
  *    fragment pipeline) and, where the near plane cuts the mesh, the near-plane slices are
  *    rasterised once; every fragment appends (lambda, tet and face) to its pixel's list. This
- *    replaces the first hit and every depth-peeling pass. The list buffer grows to what the
- *    view needs: the CPU reads the number of entries (4 bytes) after this pass, and where the
- *    buffer was too short it grows and the pass is drawn again.
+ *    replaces the first hit and every depth-peeling pass.
  * 2. Traverse: one invocation per pixel (8x8 workgroups) takes its entries in depth order and
  *    walks the ray through every layer, with the same walk (vtkTiledRayCastWalk.glsl) and the
  *    same peeling rules as the fragment pipeline. The ray state stays in registers; the colour
  *    is written once (RGBA16); the list heads are reset for the next frame as they are read, so
  *    nothing is cleared. The GPU counts rays, steps, layers and terminations per workgroup.
- * 3. Composite: one light full-screen pass blends the colour into VTK's framebuffer.
+ * 3. FinishEntries: the list buffer grows to what the view needs. With the traversal already
+ *    queued, the CPU reads the number of entries (4 bytes, ready once the entry pass is done,
+ *    while the GPU goes on with the traversal); where the buffer was too short (the first
+ *    frame of a view with more than 1.25 entries per pixel) it grows and both passes run
+ *    again. This is the one GPU result a frame waits for, and the GPU never waits for the CPU.
+ * 4. Composite: one light full-screen pass blends the colour into VTK's framebuffer.
+ *
+ * The counts of a frame are read without waiting during a later frame (double-buffered, with
+ * a fence), or at once with SynchronousStatistics.
  *
  * Target memory per pixel: a list head (4 B), the colour (8 B) and 12 B per entry (one per
  * pixel and boundary layer).
@@ -113,20 +119,26 @@ public:
 
   /**
    * Phase 1, into the pipeline's own framebuffer (the caller has pushed the framebuffer
-   * bindings and set the viewport to the image). Reads, as the one GPU result it waits for,
-   * the number of entries; also the counts of the previous frame, which are ready by then.
-   * False with a message when the list cannot grow to what the view needs.
+   * bindings and set the viewport to the image).
    */
-  bool ListEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
+  void ListEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
+
+  /**
+   * Phase 2: the traversal dispatch. Puts the latest counts that have arrived in the
+   * statistics first.
+   */
+  void Traverse(
+    const Frame& frame, vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats);
+
+  /**
+   * Phase 3: the number of entries, and both passes again where the list was too short. False
+   * with a message when the list cannot grow to what the view needs.
+   */
+  bool FinishEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
     vtkTiledRayCastStatistics* stats, std::string& error);
 
   /**
-   * Phase 2: the traversal dispatch.
-   */
-  void Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
-
-  /**
-   * Phase 3, into the caller's framebuffer, viewport and blending (premultiplied colour).
+   * Phase 4, into the caller's framebuffer, viewport and blending (premultiplied colour).
    */
   void Composite(const Frame& frame);
 
@@ -165,10 +177,10 @@ private:
   };
   bool ReadyRaster(vtkOpenGLRenderWindow* window, RasterProgram& program, const std::string& vs,
     const std::string& fs, const std::string& gs, std::string& error);
-  void DrawEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
   void BindBuffers();
   bool GrowEntries(vtkIdType needed, std::string& error);
-  void ReadCountsInto(vtkTiledRayCastStatistics* stats);
+  void Dispatch(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
+  void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
 
   RasterProgram FacesProgram;
   RasterProgram NearSliceProgram;
@@ -180,11 +192,12 @@ private:
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTiledRayCastStorageBuffer EntryNodes;
   vtkTiledRayCastStorageBuffer EntryCount;
-  vtkTiledRayCastStorageBuffer RayCounts;
+  // The counts of the last two frames: one being written while the other is read.
+  vtkTiledRayCastStorageBuffer RayCounts[2];
+  bool CountsPending[2] = { false, false };
+  int CountsBuffer = 0; // this frame's
   vtkIdType EntryCapacity = 0;
   int TargetSize[2] = { 0, 0 };
-  bool CountsPending = false;
-  vtkIdType LastEntries = 0;
   vtkIdType RaysStopped = 0;
 };
 

@@ -68,8 +68,46 @@ void vtkTiledRayCastStorageBuffer::Read(size_t offset, size_t bytes, void* data)
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::MarkWritten()
+{
+  if (this->Fence)
+  {
+    glDeleteSync(static_cast<GLsync>(this->Fence));
+  }
+  this->Fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastStorageBuffer::IsWritten(bool wait)
+{
+  if (!this->Fence)
+  {
+    return true;
+  }
+  GLsync fence = static_cast<GLsync>(this->Fence);
+  // The first wait flushes, so that a fence never waits on commands still in the CPU's queue.
+  GLenum result = glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+  while (wait && result == GL_TIMEOUT_EXPIRED)
+  {
+    result = glClientWaitSync(fence, 0, 1000000); // 1 ms
+  }
+  if (result == GL_TIMEOUT_EXPIRED)
+  {
+    return false;
+  }
+  glDeleteSync(fence);
+  this->Fence = nullptr;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastStorageBuffer::ReleaseGraphicsResources()
 {
+  if (this->Fence)
+  {
+    glDeleteSync(static_cast<GLsync>(this->Fence));
+    this->Fence = nullptr;
+  }
   if (this->Handle)
   {
     glDeleteBuffers(1, &this->Handle);

@@ -15,7 +15,8 @@
  * VTK 9.1's vtkOpenGLBufferObject knows array, element and texture buffers and uploads whole
  * arrays only; the compute pipeline needs buffers that shaders write, that are bound to
  * indexed storage-buffer binding points, zeroed in part every frame without a new allocation,
- * and read back in part. The raw GL for that is here, in one small class.
+ * and read back in part, once the commands that wrote it have completed (a fence). The raw GL
+ * for that is here, in one small class.
  *
  * Needs a current OpenGL 4.3 context. Private to the module: not wrapped, not installed.
  */
@@ -53,8 +54,17 @@ public:
    */
   void Read(size_t offset, size_t bytes, void* data) const;
 
+  ///@{
   /**
-   * Delete the GL buffer (the context must be current).
+   * A fence after the commands that write the buffer (MarkWritten), and whether they have
+   * completed (IsWritten: true when no fence is pending; with wait, blocks until they have).
+   */
+  void MarkWritten();
+  bool IsWritten(bool wait);
+  ///@}
+
+  /**
+   * Delete the GL buffer and fence (the context must be current).
    */
   void ReleaseGraphicsResources();
 
@@ -64,6 +74,7 @@ private:
 
   unsigned int Handle = 0;
   size_t Size = 0;
+  void* Fence = nullptr; // GLsync
 };
 
 #endif

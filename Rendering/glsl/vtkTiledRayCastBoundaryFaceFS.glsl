@@ -63,12 +63,10 @@ void main()
     discard;
   }
   TrcRay ray = trcPixelRay(gl_FragCoord.xy);
-  vec3 p[4];
-  vec3 n[4];
-  vec4 field;
-  trcLoadTet(ip_tet, p, n, field);
-  vec3 a = p[trcFacePoints[ip_face].x];
-  float den = dot(n[ip_face], ray.dir);
+  vec3 a;
+  vec3 normal;
+  trcLoadFace(ip_tet, ip_face, a, normal);
+  float den = dot(normal, ray.dir);
   // Where the ray crosses the face's plane. At grazing angles the division is
   // unreliable: there the rasterised depth, which placed the fragment here, is
   // used unless the two agree. (Not at other angles: the depth of a grown face
@@ -76,8 +74,8 @@ void main()
   float lambda = trcLambdaFromWindowDepth(ray, gl_FragCoord.z);
   if (den < 0.0)
   {
-    float exact = dot(a - ray.origin, n[ip_face]) / den;
-    bool grazing = -den < 1e-4 * length(n[ip_face]) * length(ray.dir);
+    float exact = dot(a - ray.origin, normal) / den;
+    bool grazing = -den < 1e-4 * length(normal) * length(ray.dir);
     if (!grazing || abs(exact - lambda) < 1e-3 * (1.0 + abs(lambda)))
     {
       lambda = exact;

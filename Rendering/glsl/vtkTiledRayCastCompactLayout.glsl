@@ -50,6 +50,19 @@ void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
   field = vec4(g, 0.25 * (q0.w + q1.w + q2.w + q3.w) - dot(g, 0.25 * (p[0] + p[1] + p[2] + p[3])));
 }
 
+// A point of face `face` and its outward normal, as trcLoadTet computes it (the first-hit and
+// entry passes need no more: three points instead of four, no gradient).
+void trcLoadFace(uint tet, int face, out vec3 point, out vec3 normal)
+{
+  uvec4 ids = texelFetch(in_TetPoints, int(tet));
+  ivec3 corners = trcFacePoints[face];
+  vec3 a = texelFetch(in_Points, int(ids[corners.x])).xyz;
+  vec3 b = texelFetch(in_Points, int(ids[corners.y])).xyz;
+  vec3 c = texelFetch(in_Points, int(ids[corners.z])).xyz;
+  point = a;
+  normal = cross(b - a, c - a);
+}
+
 // Neighbour tet across each face and the index of the shared face in it.
 void trcLoadNeighbors(uint tet, out uvec4 tets, out ivec4 faces)
 {

@@ -47,6 +47,18 @@ void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
   field = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 2), 0);
 }
 
+// A point of face `face` and its outward normal (the first-hit and entry passes need no more).
+void trcLoadFace(uint tet, int face, out vec3 point, out vec3 normal)
+{
+  ivec2 c = trcPaperTexel(tet);
+  vec3 p[4];
+  vec3 n[4];
+  trcPaperUnpack(in_Vertices, c, p);
+  trcPaperUnpack(in_FaceNormals, c, n);
+  point = p[trcFacePoints[face].x];
+  normal = n[face];
+}
+
 uint trcPaperTet(vec2 uv)
 {
   if (uv.x < 0.0)

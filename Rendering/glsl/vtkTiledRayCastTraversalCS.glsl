@@ -23,8 +23,6 @@ uniform ivec2 in_imageSize;
 // The most steps one ray may take in one layer (more than any ray can need).
 uniform int in_maximumSteps;
 uniform float in_peelEpsilon;
-// Only reset the lists (after the CPU found them too short): no ray is cast.
-uniform int in_resetOnly;
 
 // What the frame did, for the mapper's statistics (read by the CPU one frame later, or at once
 // with SynchronousStatistics).
@@ -115,7 +113,7 @@ void main()
   vec4 color = vec4(0.0);
   int steps = 0;
   uint layers = 0u;
-  if (head != 0u && in_resetOnly == 0)
+  if (head != 0u)
   {
     TrcRay ray = trcPixelRay(vec2(pixel) + 0.5);
     float exitLambda = 0.0;
@@ -170,7 +168,7 @@ void main()
   }
 
   barrier();
-  if (gl_LocalInvocationIndex == 0u && in_resetOnly == 0 && trcGroupRays == 0u)
+  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u)
   {
     atomicAdd(trcEmptyGroups, 1u);
   }
