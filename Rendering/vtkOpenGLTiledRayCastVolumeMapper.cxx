@@ -509,8 +509,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   this->Compute.Composite(frame);
   this->StopPhase(this->PhaseTimers[PhaseCompositing]);
 
-  const int groups[2] = { (frame.Width + 7) / 8, (frame.Height + 7) / 8 };
-  stats->SetNumberOfTiles(groups[0] * groups[1]);
+  stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
   stats->SetNumberOfRayCastPasses(1);
   stats->GetPassesPerTile().clear();
   stats->FinishTilePasses();

@@ -43,9 +43,11 @@ const unsigned int ColorImageUnit = 1;
 const unsigned int NodesBinding = 0;
 const unsigned int EntryCountBinding = 1;
 const unsigned int RayCountsBinding = 2;
-// Words per entry node (lambda, key, link) and the traversal's workgroup side.
+// Words per entry node (lambda, key, link), and the traversal's workgroup size in pixels
+// (local_size_x and local_size_y of vtkTiledRayCastTraversalCS.glsl).
 const vtkIdType WordsPerEntry = 3;
-const int GroupSide = 8;
+const int GroupWidth = 8;
+const int GroupHeight = 8;
 
 // The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
 enum RayCount
@@ -78,6 +80,13 @@ vtkTiledRayCastComputePipeline::vtkTiledRayCastComputePipeline() = default;
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastComputePipeline::~vtkTiledRayCastComputePipeline() = default;
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastComputePipeline::GetNumberOfTiles(const Frame& frame)
+{
+  return ((frame.Width + GroupWidth - 1) / GroupWidth) *
+    ((frame.Height + GroupHeight - 1) / GroupHeight);
+}
 
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkTiledRayCastComputePipeline::GetColorTexture()
@@ -363,7 +372,7 @@ void vtkTiledRayCastComputePipeline::Dispatch(
   traversal->SetUniformf("in_peelEpsilon", frame.PeelEpsilon);
   this->BindBuffers();
   traversal->Dispatch(
-    (frame.Width + GroupSide - 1) / GroupSide, (frame.Height + GroupSide - 1) / GroupSide);
+    (frame.Width + GroupWidth - 1) / GroupWidth, (frame.Height + GroupHeight - 1) / GroupHeight);
   vtkTiledRayCastComputeShader::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_STORAGE_BARRIER_BIT);

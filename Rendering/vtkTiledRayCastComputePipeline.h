@@ -154,6 +154,11 @@ public:
   vtkIdType GetNumberOfRaysStopped() const { return this->RaysStopped; }
 
   /**
+   * The traversal's workgroups (its tiles) for a frame.
+   */
+  static int GetNumberOfTiles(const Frame& frame);
+
+  /**
    * The colour texture the traversal writes (the mapper activates it for compositing).
    */
   vtkTextureObject* GetColorTexture();
