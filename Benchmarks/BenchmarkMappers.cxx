@@ -28,10 +28,10 @@
 // Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own;
 // then, after half a second of warm-up frames, F frames, each Render() followed by glFinish
 // (WaitForCompletion), wall clock and GPU timer; the error is measured on the first view against
-// vtkTetReferenceRenderer's exact image. Our rows also hold the median GPU time of each phase (the
-// mapper's statistics, with SynchronousStatistics on), the rays, the tets each walked and the
-// per-pixel target memory. Settings of ours are named by pipeline; each pipeline's default setting
-// is "compute default" and "fragment default".
+// vtkTetReferenceRenderer's exact image. Our rows also hold the median GPU time of each phase and
+// of the mapper's whole Render() (the mapper's statistics, with SynchronousStatistics on), its
+// CPU time, the rays, the tets each walked and the per-pixel target memory. Settings of ours are
+// named by pipeline; each pipeline's default setting is "compute default" and "fragment default".
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -99,7 +99,8 @@ struct Row
          LostPixels = NAN, Layers = NAN, MedianPasses = NAN, MaxPasses = NAN;
   std::string Pipeline;
   double FirstHitMs = NAN, PeelingMs = NAN, RayCastingMs = NAN, CompositingMs = NAN, Rays = NAN,
-         MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN;
+         MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN,
+         MapperGpuMs = NAN, MapperCpuMs = NAN;
 };
 
 const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
@@ -107,7 +108,7 @@ const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms
                      "rmse,p999,max_err,lost_pixels,layers,median_passes_per_tile,"
                      "max_passes_per_tile,pipeline,first_hit_ms,peeling_ms,ray_casting_ms,"
                      "compositing_ms,rays,mean_steps_per_ray,max_steps_per_ray,entries,"
-                     "target_bytes_per_pixel";
+                     "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms";
 
 std::string Cell(double v)
 {
@@ -131,7 +132,8 @@ void WriteRow(std::ostream& os, const Row& r)
      << "," << Cell(r.MedianPasses) << "," << Cell(r.MaxPasses) << "," << r.Pipeline << ","
      << Cell(r.FirstHitMs) << "," << Cell(r.PeelingMs) << "," << Cell(r.RayCastingMs) << ","
      << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
-     << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << "\n";
+     << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
+     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "\n";
 }
 
 double Median(std::vector<double> v)
@@ -563,7 +565,7 @@ int main(int argc, char* argv[])
         }
 
         std::vector<double> wall, gpu;
-        std::vector<double> phases[4], steps;
+        std::vector<double> phases[4], steps, mapperGpu, mapperCpu;
         auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
         vtkOpenGLRenderTimer timerObject; // not a vtkObject
         vtkOpenGLRenderTimer* gpuTimer = &timerObject;
@@ -590,6 +592,8 @@ int main(int argc, char* argv[])
             phases[2].push_back(stats->GetRayCastingTime());
             phases[3].push_back(stats->GetCompositingTime());
             steps.push_back(stats->GetMeanStepsPerRay());
+            mapperGpu.push_back(stats->GetTotalGPUTime());
+            mapperCpu.push_back(1000.0 * stats->GetRenderTime());
           }
         }
         gpuTimer->ReleaseGraphicsResources();
@@ -610,6 +614,8 @@ int main(int argc, char* argv[])
           row.PeelingMs = Median(phases[1]);
           row.RayCastingMs = Median(phases[2]);
           row.CompositingMs = Median(phases[3]);
+          row.MapperGpuMs = Median(mapperGpu);
+          row.MapperCpuMs = Median(mapperCpu);
           row.Rays = static_cast<double>(stats->GetNumberOfRays());
           if (row.Pipeline == "Compute") // the fragment pipeline counts no steps or entries
           {

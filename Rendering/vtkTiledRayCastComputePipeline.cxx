@@ -47,7 +47,7 @@ const unsigned int RayCountsBinding = 2;
 // (local_size_x and local_size_y of vtkTiledRayCastTraversalCS.glsl).
 const vtkIdType WordsPerEntry = 3;
 const int GroupWidth = 8;
-const int GroupHeight = 8;
+const int GroupHeight = 4;
 
 // The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
 enum RayCount
