@@ -21,6 +21,7 @@
 //                       only ours, over the fragment pipeline's tile sizes, tets per pass and
 //                       occlusion-query intervals; "pipelines" only ours, each pipeline's default
 //     --no-others       leave VTK's mappers out
+//     --pt-only         of VTK's mappers, only the projected tetrahedra (large meshes and images)
 //     --zsweep-max-tets T  ZSweep only up to T tets and 512 px (default 300000)
 //     --resample R,R,.. resampling resolutions for resample + GPU ray cast (default 64,128,256)
 //     --no-reference    skip the exact reference (error columns stay empty)
@@ -81,6 +82,7 @@ struct Options
   std::string Csv;
   bool OursOnly = false;
   bool Others = true;
+  bool ProjectedTetrahedraOnly = false;
   std::string Sweep = "quick"; // quick, full or defaults
   vtkIdType ZSweepMaxTets = 300000;
   std::vector<int> Resample = { 64, 128, 256 };
@@ -316,6 +318,10 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
       m->SetInputData(grid);
       return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
     } });
+  if (o.ProjectedTetrahedraOnly)
+  {
+    return settings;
+  }
   settings.push_back({ "bunyk_raycast", "partial preintegration",
     [=](double&)
     {
@@ -401,6 +407,8 @@ int main(int argc, char* argv[])
       o.OursOnly = true;
     else if (a == "--no-others")
       o.Others = false;
+    else if (a == "--pt-only")
+      o.ProjectedTetrahedraOnly = true;
     else if (a == "--sweep")
     {
       o.Sweep = next();

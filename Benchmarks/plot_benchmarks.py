@@ -2,7 +2,7 @@
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Benchmarks/plot_benchmarks.py \
         results.csv --output-dir plots [--title-suffix "GPU: NVIDIA H100"] \
-        [--default-setting "compute default"]
+        [--default-setting "compute default,fragment default"]
 
 With the tiledraycast module importable no X display is needed (its EGL window is used);
 without it VTK's X window needs one: ``xvfb-run -a /usr/bin/python3 Benchmarks/...``.
@@ -225,26 +225,32 @@ def representative(rows, mapper, default_setting):
     return sorted((row for _, row in chosen.values()), key=lambda r: r["tets"])
 
 
-def plot_scaling(rows, size, suffix, default_setting, path):
-    """Median time against the number of tetrahedra, one line per mapper family."""
-    series = [(m, representative(rows, m, default_setting))
-              for m in list(FAMILIES) + sorted({r["mapper"] for r in rows}.difference(FAMILIES))]
-    if any(r["mapper"] == "ours" for r in rows) and not series[0][1]:
-        print("warning: no row of ours has setting %r at size %s; the scaling chart leaves "
-              "ours out (see --default-setting)" % (default_setting, size), file=sys.stderr)
-    series = [(m, chosen) for m, chosen in series if chosen]
+def plot_scaling(rows, size, suffix, default_settings, path):
+    """Median time against the number of tetrahedra, one line per mapper family (ours: one per
+    setting of default_settings, a comma-separated list)."""
+    series = []
+    for m in list(FAMILIES) + sorted({r["mapper"] for r in rows}.difference(FAMILIES)):
+        for setting in (default_settings.split(",") if m == "ours" else [None]):
+            chosen = representative(rows, m, setting)
+            if m == "ours" and not chosen and any(r["mapper"] == "ours" for r in rows):
+                print("warning: no row of ours has setting %r at size %s; the scaling chart "
+                      "leaves it out (see --default-setting)" % (setting, size), file=sys.stderr)
+            series.append((m, setting, chosen))
+    series = [(m, setting, chosen) for m, setting, chosen in series if chosen]
     if not series:
         return False
-    points = [r for _, chosen in series for r in chosen]
+    points = [r for _, _, chosen in series for r in chosen]
     chart = make_chart("Frame time against mesh size, %s%s" % (size_text(size), suffix),
                        "Tetrahedra", "Median frame time (ms)",
                        [r["tets"] for r in points], [r["median_ms"] for r in points])
     markers = [vtkPlotPoints.CIRCLE, vtkPlotPoints.SQUARE, vtkPlotPoints.DIAMOND,
                vtkPlotPoints.PLUS, vtkPlotPoints.CROSS]
-    for mapper, chosen in series:
+    for index, (mapper, setting, chosen) in enumerate(series):
         name, colour, marker = family(mapper)
         if mapper == "ours":
-            name += ": " + default_setting
+            name += ": " + setting
+            if index > 0:  # another setting of ours: a darker shade of our colour
+                colour = tuple(c // 2 for c in colour)
         # Dataset-ladder rungs (wavelet_1m, torus_3m, ...): one line per mesh family, since
         # frame time depends on the shape as much as on the size.
         groups = {}
@@ -305,8 +311,8 @@ def main():
     parser.add_argument("csv", help="benchmark results (one row per scene/mapper/setting/size)")
     parser.add_argument("--output-dir", required=True, help="where the PNGs and markdown go")
     parser.add_argument("--title-suffix", default="", help='e.g. "GPU: NVIDIA H100"')
-    parser.add_argument("--default-setting", default="compute default",
-                        help="setting of ours shown in the scaling chart")
+    parser.add_argument("--default-setting", default="compute default,fragment default",
+                        help="settings of ours shown in the scaling chart (comma-separated)")
     args = parser.parse_args()
     if not HEADLESS and not os.environ.get("DISPLAY"):
         parser.error("no X display and no tiledraycast module: put build/lib/python3/"

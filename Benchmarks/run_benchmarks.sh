@@ -21,19 +21,24 @@ unset DISPLAY
 
 case "$kind" in
   cpu)
-    # llvmpipe on 2 cores: 512², the meshes of the GPU run and spx. ZSweep only up to 300k tets;
-    # on the 1M-tet torus fewer frames and no 256³ resampling (minutes each on 2 cores).
-    "$bench" --size 512 --frames 6 --csv "$out/results.csv" \
+    # llvmpipe on 2 cores, 512²: our two pipelines and the projected tetrahedra side by side on
+    # the meshes of the GPU run and spx (VTK's slower CPU mappers are in the CSV of earlier runs:
+    # docs/benchmarks.md).
+    "$bench" --sweep pipelines --pt-only --size 512 --frames 6 --csv "$out/results.csv" \
       "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu"
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-    "$bench" --size 512 --frames 4 --resample 64,128 --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+    "$bench" --sweep pipelines --pt-only --size 512 --frames 4 --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="llvmpipe (CPU)"
     ;;
   gpu)
+    # Every mapper at 1024² (the floor scene, three meshes); torus_1m at 2048² with our two
+    # pipelines and the projected tetrahedra.
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-    "$bench" --size 1024 --frames 10 --csv "$out/results.csv" \
+    "$bench" --size 1024 --frames 10 --csv "$out/results.csv" "$meshes/box5_tets.vtu" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
+    "$bench" --sweep pipelines --pt-only --no-reference --size 2048 --frames 10 \
+      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;
@@ -64,8 +69,15 @@ case "$kind" in
     rungs="${TRC_LADDER_RUNGS:-wavelet_300k wavelet_1m wavelet_3m wavelet_10m wavelet_30m torus_300k torus_1m torus_3m}"
     "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' $rungs) \
       --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    # Our two pipelines on every rung; the projected tetrahedra up to 3M tets (its CPU sort
+    # takes seconds a frame beyond).
     for f in "$out"/ladder/*.vtu; do
-      "$bench" --ours-only --no-reference --size 1024 --frames 10 --csv "$out/ladder.csv" "$f"
+      case "$(basename "$f")" in
+        *_10m.vtu|*_30m.vtu) others=--no-others ;;
+        *) others=--pt-only ;;
+      esac
+      "$bench" --sweep pipelines $others --no-reference --size 1024 --frames 10 \
+        --csv "$out/ladder.csv" "$f"
       rm -f "$f"
     done
     suffix="GPU"

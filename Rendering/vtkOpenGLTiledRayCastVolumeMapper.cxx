@@ -413,7 +413,10 @@ public:
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
     return static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX));
   }
+  // The GPU work of a frame in each pipeline, from the first hit to compositing (the caller
+  // has pushed the framebuffer bindings; both pop them before compositing).
   bool RenderCompute(vtkOpenGLRenderWindow* window);
+  bool RenderFragment(vtkOpenGLRenderWindow* window);
   void SetTargetUniforms(vtkShaderProgram* program, int parity);
   void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
   void DrawViewport(Program& program);
@@ -458,6 +461,53 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
     }
   }
   this->UseCompute = compute;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRenderWindow* window)
+{
+  this->Queries.Recycle();
+  this->PassBlocks.clear();
+  this->NearPlaneQuery = 0;
+  this->MakeTiles();
+
+  this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
+  this->RenderFirstHit(window);
+  this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
+  // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
+  // a peel finds no re-entry.
+  int layers = 1;
+  int peels = 0;
+  const int maxLayers = 1 << 16;
+  while (true)
+  {
+    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
+    this->RayCastLayer(window);
+    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
+    if (layers >= maxLayers)
+    {
+      vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+      vtkWarningWithObjectMacro(self, "Stopped after " << maxLayers << " boundary layers.");
+      break;
+    }
+    this->StartPhase(this->PhaseTimers[PhasePeeling]);
+    const unsigned int reentered = this->Peel(window);
+    this->StopPhase(this->PhaseTimers[PhasePeeling]);
+    ++peels;
+    if (!reentered)
+    {
+      break;
+    }
+    ++layers;
+  }
+  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
+  this->Composite(window);
+  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
+  this->FinishStatistics();
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  stats->SetNumberOfLayers(layers);
+  stats->SetNumberOfPeelPasses(peels);
   return true;
 }
 
@@ -2017,8 +2067,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // timed, and the statistics keep the latest times measured.
   const bool timing = !impl->TimersPending;
   impl->TimingThisFrame = timing;
-  auto start = [&](PhaseTimer& t) { impl->StartPhase(t); };
-  auto stop = [&](PhaseTimer& t) { impl->StopPhase(t); };
   if (timing)
   {
     impl->TotalTimer.Reset();
@@ -2027,7 +2075,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       t.Reset();
     }
   }
-  start(impl->TotalTimer);
+  impl->StartPhase(impl->TotalTimer);
   // The opaque geometry drawn so far ends the rays.
   if (!impl->CaptureOpaqueDepth(window, width, height))
   {
@@ -2041,82 +2089,35 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   impl->ActivateTextures(true);
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetPipeline(impl->UseCompute ? "Compute" : "Fragment");
-  if (impl->UseCompute)
-  {
-    const bool ok = impl->RenderCompute(window);
-    stop(impl->TotalTimer);
-    impl->TimersPending = timing;
-    state->vtkglCullFace(cullFaceMode);
-    impl->ActivateTextures(false);
-    if (!ok)
-    {
-      return;
-    }
-    if (this->SynchronousStatistics)
-    {
-      impl->Compute.ReadCounts(stats);
-      impl->ReadTimers(true);
-    }
-    if (impl->Compute.GetNumberOfRaysStopped() > 0 && !impl->WarnedStoppedRays)
-    {
-      vtkWarningMacro(<< impl->Compute.GetNumberOfRaysStopped()
-                      << " rays reached the bound of steps in one boundary layer and were "
-                         "stopped; the mesh's neighbour links may loop.");
-      impl->WarnedStoppedRays = true;
-    }
-    this->FinishRender(impl->Compute.GetTargetBytes() + static_cast<vtkIdType>(width) * height * 4);
-    return;
-  }
-  impl->Queries.Recycle();
-  impl->PassBlocks.clear();
-  impl->NearPlaneQuery = 0;
-  impl->MakeTiles();
-
-  start(impl->PhaseTimers[PhaseFirstHit]);
-  impl->RenderFirstHit(window);
-  stop(impl->PhaseTimers[PhaseFirstHit]);
-  // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
-  // a peel finds no re-entry.
-  int layers = 1;
-  int peels = 0;
-  const int maxLayers = 1 << 16;
-  while (true)
-  {
-    start(impl->PhaseTimers[PhaseRayCasting]);
-    impl->RayCastLayer(window);
-    stop(impl->PhaseTimers[PhaseRayCasting]);
-    if (layers >= maxLayers)
-    {
-      vtkWarningMacro("Stopped after " << maxLayers << " boundary layers.");
-      break;
-    }
-    start(impl->PhaseTimers[PhasePeeling]);
-    const unsigned int reentered = impl->Peel(window);
-    stop(impl->PhaseTimers[PhasePeeling]);
-    ++peels;
-    if (!reentered)
-    {
-      break;
-    }
-    ++layers;
-  }
-  start(impl->PhaseTimers[PhaseCompositing]);
-  impl->Composite(window);
-  stop(impl->PhaseTimers[PhaseCompositing]);
-  stop(impl->TotalTimer);
+  const bool ok = impl->UseCompute ? impl->RenderCompute(window) : impl->RenderFragment(window);
+  impl->StopPhase(impl->TotalTimer);
   impl->TimersPending = timing;
   state->vtkglCullFace(cullFaceMode);
   impl->ActivateTextures(false);
-  impl->FinishStatistics();
+  if (!ok)
+  {
+    return;
+  }
   if (this->SynchronousStatistics)
   {
+    if (impl->UseCompute)
+    {
+      impl->Compute.ReadCounts(stats);
+    }
     impl->ReadTimers(true);
   }
-
-  stats->SetNumberOfLayers(layers);
-  stats->SetNumberOfPeelPasses(peels);
-  // Per pixel: two sets of state, colour and entry (16 B each), plus two depth buffers.
-  this->FinishRender(static_cast<vtkIdType>(width) * height * (2 * (16 + 16 + 16) + 8));
+  if (impl->UseCompute && impl->Compute.GetNumberOfRaysStopped() > 0 && !impl->WarnedStoppedRays)
+  {
+    vtkWarningMacro(<< impl->Compute.GetNumberOfRaysStopped()
+                    << " rays reached the bound of steps in one boundary layer and were "
+                       "stopped; the mesh's neighbour links may loop.");
+    impl->WarnedStoppedRays = true;
+  }
+  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or two sets of state,
+  // colour and entry (16 B each) and two depth buffers.
+  const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
+  this->FinishRender(
+    impl->UseCompute ? impl->Compute.GetTargetBytes() + 4 * pixels : (2 * 48 + 8) * pixels);
 }
 
 //------------------------------------------------------------------------------

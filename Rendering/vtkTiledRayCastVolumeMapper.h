@@ -18,15 +18,16 @@
  *
  * - the mesh is packed once into textures (a compact layout of point and neighbour indices, or
  *   the paper's 144-byte layout) and re-uploaded only when the data changes;
- * - a first-hit pass rasterises the mesh's boundary faces and starts one ray per pixel in the
- *   tetrahedron it enters (or, with the camera inside the mesh, in the one that holds the
- *   near-plane point);
- * - ray-casting passes over screen tiles walk every ray from tetrahedron to neighbour, up to
- *   TetsPerPass tetrahedra per pass, integrating the transfer function along each segment
- *   exactly the way VTK's unstructured-grid mappers define it, until the ray leaves the mesh, the
- *   opaque geometry or the far plane stops it, or it is opaque (early ray termination);
- * - depth peeling of the boundary finds where rays re-enter non-convex meshes, one layer at a
- *   time and only as many layers as some ray still needs;
+ * - every ray walks from tetrahedron to neighbour, integrating the transfer function along each
+ *   segment exactly the way VTK's unstructured-grid mappers define it, until the ray leaves the
+ *   mesh, the opaque geometry or the far plane stops it, or it is opaque (early ray
+ *   termination), and re-enters non-convex meshes where their boundary takes it back in;
+ * - by default (OpenGL 4.3, see Pipeline) one raster pass lists per pixel every place where the
+ *   ray enters the mesh (the boundary's front faces, and the near plane where the camera is
+ *   inside), and one compute dispatch over 8x4-pixel tiles walks every ray through all its
+ *   layers; the paper's pipeline, in fragment shaders, finds the entries by a first-hit pass and
+ *   depth peeling of the boundary, one layer at a time, and walks the rays in passes over screen
+ *   tiles, up to TetsPerPass tetrahedra per pass;
  * - the result is composited into the render window, clipped by opaque geometry already drawn.
  *
  * The optical model is that of vtkUnstructuredGridPartialPreIntegration: the opacity transfer
@@ -34,8 +35,8 @@
  * unit, the colour is emitted in proportion to it; see docs/design.md. Only the first component
  * of the volume property is used.
  *
- * After each render, GetStatistics() tells what was done (layers, passes per tile, tiles
- * skipped, rays terminated early, GPU time per phase, GPU memory held) and
+ * After each render, GetStatistics() tells what was done (pipeline, rays, tetrahedra per ray,
+ * layers, tiles skipped, rays terminated early, GPU time per phase, GPU memory held) and
  * GetValidationReport() what the mesh builder found in the input.
  *
  * This class is abstract: New() returns the OpenGL implementation through VTK's object factory
@@ -263,10 +264,11 @@ public:
 
   ///@{
   /**
-   * When on, Render() waits at the end of each frame for the GPU timers, so that the
-   * statistics hold this frame's GPU times (benchmarks want this). When off (the default), the
-   * timers of a frame are read during a later frame without stalling the GPU, and the
-   * statistics hold the latest times available.
+   * When on, Render() waits at the end of each frame for the GPU timers (and, in the compute
+   * pipeline, for the GPU's counts of rays, steps, layers and terminations), so that the
+   * statistics hold this frame's (benchmarks and tests want this). When off (the default), they
+   * are read during a later frame without stalling the GPU, and the statistics hold the latest
+   * available.
    */
   vtkSetMacro(SynchronousStatistics, bool);
   vtkGetMacro(SynchronousStatistics, bool);

@@ -73,6 +73,14 @@ class TestTiledRayCastPython(unittest.TestCase):
         self.assertGreaterEqual(stats.GetNumberOfLayers(), 2)  # spx is not convex
         self.assertGreater(stats.GetMeshBytes(), 0)
         self.assertIn("rays", stats.GetSummary())
+        # The pipeline setting wraps: automatic by default, which takes compute shaders where
+        # the context has OpenGL 4.3 (llvmpipe and NVIDIA do).
+        self.assertEqual(mapper.GetPipeline(), vtkTiledRayCastVolumeMapper.AUTOMATIC_PIPELINE)
+        self.assertEqual(mapper.GetPipelineAsString(), "Automatic")
+        self.assertIn(stats.GetPipeline(), ("Compute", "Fragment"))
+        if stats.GetPipeline() == "Compute":
+            self.assertGreaterEqual(stats.GetNumberOfEntries(), stats.GetNumberOfRays())
+            self.assertGreater(stats.GetMeanStepsPerRay(), 1.0)
         self.assertEqual(mapper.GetValidationReport().GetNumberOfTetrahedra(),
                          grid.GetNumberOfCells())
 
