@@ -556,6 +556,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  // The entry pass culled by the volume's handedness; the screen rectangle must not be culled.
+  state->vtkglDisable(GL_CULL_FACE);
   this->Compute.Composite(frame);
   this->StopPhase(this->PhaseTimers[PhaseCompositing]);
 
@@ -1782,9 +1784,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
   vtkOpenGLState* state = window->GetState();
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
 
-  // Bring every tile to set 0, then count the rays that became opaque.
+  // Bring every tile to set 0, then count the rays that became opaque. Screen rectangles are
+  // never culled: the last peel culled by the volume's handedness, and a mirroring matrix
+  // culls front faces, counter-clockwise like the rectangles.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
+  state->vtkglDisable(GL_CULL_FACE);
   for (Tile& tile : this->Tiles)
   {
     if (tile.Parity == 1)

@@ -301,6 +301,41 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
+    { "mirror",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // A volume matrix with a negative determinant (a mirror in y, and a turn): its front
+        // faces wind clockwise on screen. It once drew nothing in either pipeline.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Volume->SetScale(1.0, -1.0, 1.0);
+        s.Volume->SetOrientation(0, 30, 0);
+        s.Renderer->ResetCamera();
+        s.View(20, 30);
+        s.Check = [](Scene& t)
+        {
+          return RenderedWith(t, "Compute") &&
+            Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
+        };
+        return true;
+      } },
+    { "mirror_fragment",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // The same in the fragment pipeline, mirrored in z.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Mapper->SetPipelineToFragment();
+        s.Volume->SetScale(1.0, 1.0, -1.0);
+        s.Renderer->ResetCamera();
+        s.View(20, 30);
+        s.Check = [](Scene& t)
+        {
+          return RenderedWith(t, "Fragment") &&
+            Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
+        };
+        return true;
+      } },
     { "table3d",
       [](Scene& s, int argc, char* argv[])
       {
