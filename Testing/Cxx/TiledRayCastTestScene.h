@@ -104,12 +104,15 @@ inline vtkSmartPointer<vtkVolumeProperty> MakePropertyFor(
 
 // Bounds on the difference between the window's image and the exact reference, in 1/255.
 // The defaults hold for partial pre-integration, exact up to float arithmetic and the 8-bit
-// framebuffer: what remains is rounding (1/255) and rare silhouette pixels.
+// framebuffer: what remains is rounding, of the colour and of the blend over the background in
+// 8 bits (a difference of 1 on many pixels: RMSE up to 0.51 on llvmpipe). Measured on llvmpipe
+// since the Psi table is read the right way round: at most 1 on every pixel of every image of
+// the suite (up to 8 before); the bounds leave room for a GPU's own float rounding.
 struct Bounds
 {
   double RMSE = 0.75;
-  double P999 = 2.0; // 99.9th percentile of per-channel differences
-  double Max = 8.0;
+  double P999 = 1.0; // 99.9th percentile of per-channel differences
+  double Max = 2.0;
 };
 
 // Renders the exact reference of what `volume` shows in `renderer` (same camera, viewport size,

@@ -105,7 +105,7 @@ class TestTiledRayCastPython(unittest.TestCase):
         rmse = (sum(d * d for d in diffs) / n) ** 0.5
         print("ours vs exact reference (1/255): RMSE %.3f, max %d" % (rmse, max(diffs)))
         self.assertLessEqual(rmse, 0.75)
-        self.assertLessEqual(max(diffs), 8)
+        self.assertLessEqual(max(diffs), 2)
 
 
 if __name__ == "__main__":
