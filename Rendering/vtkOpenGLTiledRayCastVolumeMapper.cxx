@@ -642,7 +642,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
   {
     self->ValidationReport->DeepCopy(report);
     this->ReportedTime = report->GetMTime();
-    if (report->GetUsable() && report->HasDefects())
+    if (report->GetUsable() && report->HasProblems())
     {
       vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
     }

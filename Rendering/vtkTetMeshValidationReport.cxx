@@ -72,6 +72,15 @@ bool vtkTetMeshValidationReport::HasDefects() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkTetMeshValidationReport::HasProblems() const
+{
+  return this->NumberOfIgnoredCells > 0 || this->NumberOfInvalidCells > 0 ||
+    this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
+    this->NumberOfNonFiniteScalars > 0;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkTetMeshValidationReport::GetSummary() const
 {
   std::ostringstream text;

@@ -137,6 +137,14 @@ public:
   bool HasDefects() const;
 
   /**
+   * True when the input has a problem its user should hear of: ignored or invalid cells,
+   * degenerate tetrahedra, non-manifold or crack faces, duplicate points or non-finite scalars.
+   * Split cells and reoriented (inverted) tetrahedra are normal service: counted, not a problem.
+   * The mapper warns (once per build) only when this is true.
+   */
+  bool HasProblems() const;
+
+  /**
    * A one-paragraph description of the mesh and of every defect found, for messages and logs.
    */
   std::string GetSummary() const;

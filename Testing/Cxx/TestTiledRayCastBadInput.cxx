@@ -16,10 +16,14 @@
 #include "TiledRayCastTestScene.h"
 
 #include "vtkActor.h"
+#include "vtkAppendFilter.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkConeSource.h"
 #include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -212,6 +216,71 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     ok = Expect(warnings->Text.find("NaN") != std::string::npos, "NaN scalars are reported") && ok;
     ok = Expect(mapper->GetStatistics()->GetRendered(), "a mesh with NaN scalars renders") && ok;
     ok = trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), "NaN") && ok;
+  }
+
+  // Normal service is not a warning: spx with every other tetrahedron inverted (two points
+  // swapped: the builder reorients them), and a grid of hexahedra, split into tetrahedra. Both
+  // render silently; the report counts what was done.
+  {
+    vtkNew<vtkUnstructuredGrid> inverted;
+    inverted->DeepCopy(spx);
+    for (vtkIdType c = 0; c < inverted->GetNumberOfCells(); c += 2)
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      inverted->GetCellPoints(c, n, ids);
+      const vtkIdType swapped[4] = { ids[1], ids[0], ids[2], ids[3] };
+      inverted->ReplaceCell(c, 4, swapped);
+    }
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(4, 4, 4);
+    vtkNew<vtkFloatArray> values;
+    for (vtkIdType i = 0; i < 64; ++i)
+    {
+      values->InsertNextValue(static_cast<float>(i % 7));
+    }
+    image->GetPointData()->SetScalars(values);
+    vtkNew<vtkAppendFilter> toUnstructured;
+    toUnstructured->SetInputData(image);
+    toUnstructured->Update();
+    vtkUnstructuredGrid* hexahedra = toUnstructured->GetOutput();
+    for (vtkUnstructuredGrid* grid : { inverted.Get(), hexahedra })
+    {
+      if (!grid)
+      {
+        return EXIT_FAILURE;
+      }
+      double range[2];
+      grid->GetPointData()->GetScalars()->GetRange(range);
+      vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+      mapper->SetInputData(grid);
+      vtkNew<MessageCounter> warnings;
+      mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+      vtkNew<vtkVolume> volume;
+      volume->SetMapper(mapper);
+      volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()));
+      vtkNew<vtkRenderer> renderer;
+      renderer->AddVolume(volume);
+      vtkNew<vtkRenderWindow> window;
+      window->SetMultiSamples(0);
+      window->SetSize(64, 64);
+      window->AddRenderer(renderer);
+      renderer->ResetCamera();
+      window->Render();
+      vtkTetMeshValidationReport* report = mapper->GetValidationReport();
+      const bool invertedCase = grid == inverted.Get();
+      ok = Expect(invertedCase ? report->GetNumberOfInvertedTetrahedra() > 0
+                               : report->GetNumberOfSplitCells() == 27,
+             invertedCase ? "inverted tetrahedra are counted" : "27 hexahedra are split") &&
+        ok;
+      ok = Expect(warnings->Count == 0,
+             std::string(invertedCase ? "reoriented" : "split") +
+               " cells render without a warning (" + warnings->Text + ")") &&
+        ok;
+      ok = trctest::CheckAgainstReference(
+             window, renderer, volume, trctest::Bounds(), invertedCase ? "reoriented" : "split") &&
+        ok;
+    }
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
