@@ -28,6 +28,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -1999,8 +2000,22 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
+  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
+  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
+  // it, the volume's property keys carry the peeling pass's depth-mask override).
   vtkInformation* keys = vol->GetPropertyKeys();
-  if (keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride()) && !impl->WarnedTranslucentGeometry)
+  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  for (vtkProp* prop = props->GetNextProp(it);
+       prop && !translucentGeometry && !impl->WarnedTranslucentGeometry;
+       prop = props->GetNextProp(it))
+  {
+    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+      prop->HasTranslucentPolygonalGeometry();
+  }
+  if (translucentGeometry && !impl->WarnedTranslucentGeometry)
   {
     vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
                     "with the volume (it is drawn before it, as for VTK's projected tetrahedra "

@@ -282,5 +282,44 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
         ok;
     }
   }
+
+  // Translucent polygons in the renderer are not composited with the volume: one warning, on
+  // the first frame only; an opaque actor brings none.
+  for (double opacity : { 1.0, 0.4 })
+  {
+    double range[2];
+    spx->GetPointData()->GetScalars()->GetRange(range);
+    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+    mapper->SetInputData(spx);
+    vtkNew<MessageCounter> warnings;
+    mapper->AddObserver(vtkCommand::WarningEvent, warnings);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * spx->GetLength()));
+    vtkNew<vtkConeSource> cone;
+    vtkNew<vtkPolyDataMapper> coneMapper;
+    coneMapper->SetInputConnection(cone->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(coneMapper);
+    actor->GetProperty()->SetOpacity(opacity);
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddVolume(volume);
+    renderer->AddActor(actor);
+    vtkNew<vtkRenderWindow> window;
+    window->SetMultiSamples(0);
+    window->SetSize(64, 64);
+    window->AddRenderer(renderer);
+    renderer->ResetCamera();
+    window->Render();
+    window->Render();
+    const int expected = opacity < 1.0 ? 1 : 0;
+    ok = Expect(warnings->Count == expected &&
+             (expected == 0 || warnings->Text.find("Translucent") != std::string::npos),
+           std::string(expected ? "one warning for translucent geometry"
+                                : "no warning for an "
+                                  "opaque actor") +
+             " (" + warnings->Text + ")") &&
+      ok;
+  }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
