@@ -1455,7 +1455,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtk
   table->GetSize(size);
   double range[2];
   table->GetScalarRange(range);
-  const float scalarMap[3] = { static_cast<float>(range[0]),
+  // The mesh's scalars are shifted on the GPU (vtkTetMesh::GetScalarShift): so is the table's
+  // first grid scalar.
+  const float scalarMap[3] = { static_cast<float>(
+                                 range[0] - vtkTetMesh::ComputeScalarShift(this->ScalarRange)),
     static_cast<float>(range[1] > range[0] ? (size[0] - 1) / (range[1] - range[0]) : 0.0),
     static_cast<float>(size[0]) };
   p->SetUniformi("in_preIntegrationTable", this->TableTexture->GetTextureUnit());

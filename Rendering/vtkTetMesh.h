@@ -101,6 +101,21 @@ public:
    */
   void GetScalarRange(double range[2]) const;
 
+  ///@{
+  /**
+   * The GPU layouts store every scalar minus this value, computed in double before the
+   * subtraction becomes float, and the mapper shifts its transfer function's nodes by the same:
+   * scalars far from zero (1e6 plus a few units) keep the precision of their differences. It is
+   * the middle of the scalar range (0 when the range is not finite).
+   */
+  double GetScalarShift() const { return vtkTetMesh::ComputeScalarShift(this->ScalarRange); }
+  static double ComputeScalarShift(const double range[2])
+  {
+    const double middle = 0.5 * range[0] + 0.5 * range[1];
+    return middle - middle == 0.0 ? middle : 0.0; // finite
+  }
+  ///@}
+
   /**
    * Bounds of all points (xmin, xmax, ymin, ymax, zmin, zmax).
    */

@@ -142,6 +142,7 @@ void vtkTetMeshCompactLayout::PackPoints(vtkTetMesh* mesh)
   const double* s = mesh->GetPointScalars();
   double shift[3];
   mesh->GetShift(shift);
+  const double scalarShift = mesh->GetScalarShift();
   vtkSMPTools::For(0, numPoints, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -150,7 +151,7 @@ void vtkTetMeshCompactLayout::PackPoints(vtkTetMesh* mesh)
         out[4 * i] = static_cast<float>(p[3 * i] - shift[0]);
         out[4 * i + 1] = static_cast<float>(p[3 * i + 1] - shift[1]);
         out[4 * i + 2] = static_cast<float>(p[3 * i + 2] - shift[2]);
-        out[4 * i + 3] = s ? FiniteOrInfinity(s[i]) : 0.0f;
+        out[4 * i + 3] = s ? FiniteOrInfinity(s[i] - scalarShift) : 0.0f;
       }
     });
 }
@@ -165,6 +166,7 @@ void vtkTetMeshCompactLayout::PackCellScalars(vtkTetMesh* mesh)
     array->SetNumberOfTuples(0);
     return;
   }
+  const double scalarShift = mesh->GetScalarShift();
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   array->SetNumberOfTuples(numTets);
   float* out = array->GetPointer(0);
@@ -173,7 +175,7 @@ void vtkTetMeshCompactLayout::PackCellScalars(vtkTetMesh* mesh)
     {
       for (vtkIdType t = begin; t < end; ++t)
       {
-        out[t] = FiniteOrInfinity(s[t]);
+        out[t] = FiniteOrInfinity(s[t] - scalarShift);
       }
     });
 }

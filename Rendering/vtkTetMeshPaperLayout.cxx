@@ -185,6 +185,7 @@ void vtkTetMeshPaperLayout::PackGeometry(vtkTetMesh* mesh)
 void vtkTetMeshPaperLayout::PackScalars(vtkTetMesh* mesh)
 {
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const double scalarShift = mesh->GetScalarShift();
   const vtkIdType width = this->PackedWidth;
   float* data =
     static_cast<vtkFloatArray*>(this->Arrays[NeighborsAndScalarsArray].Array.Get())->GetPointer(0);
@@ -197,6 +198,7 @@ void vtkTetMeshPaperLayout::PackScalars(vtkTetMesh* mesh)
         float* texel = data + 4 * ((3 * (t / width) + 2) * width + t % width);
         if (mesh->ComputeScalarGradientFast(t, gc))
         {
+          gc[3] -= scalarShift; // see vtkTetMesh::GetScalarShift
           for (int k = 0; k < 4; ++k)
           {
             texel[k] = static_cast<float>(gc[k]);

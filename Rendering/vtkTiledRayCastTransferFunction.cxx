@@ -10,6 +10,8 @@
 =========================================================================*/
 #include "vtkTiledRayCastTransferFunction.h"
 
+#include "vtkTetMesh.h"
+
 #include "vtkColorTransferFunction.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
@@ -378,11 +380,14 @@ void vtkTiledRayCastTransferFunction::Build(
       this->NarrowestFeature = std::min(this->NarrowestFeature, d);
     }
   }
+  // The shader's node scalars are shifted as the mesh's (vtkTetMesh::GetScalarShift), in
+  // double before they become float.
+  const double shift = vtkTetMesh::ComputeScalarShift(scalarRange);
   const size_t n = this->Scalars.size();
   this->Texels.assign(8 * n, 0.0f);
   for (size_t i = 0; i < n; ++i)
   {
-    this->Texels[8 * i + 0] = static_cast<float>(this->Scalars[i]);
+    this->Texels[8 * i + 0] = static_cast<float>(this->Scalars[i] - shift);
     this->Texels[8 * i + 1] = static_cast<float>(this->Attenuations[i]);
     this->Texels[8 * i + 4] = static_cast<float>(this->Colors[3 * i + 0]);
     this->Texels[8 * i + 5] = static_cast<float>(this->Colors[3 * i + 1]);

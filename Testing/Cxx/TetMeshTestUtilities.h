@@ -359,6 +359,7 @@ inline std::string CheckPaperLayout(
     const float* gc = texel(nbs, t, 2);
     double expected[4];
     const bool finite = mesh->ComputeScalarGradient(t, expected);
+    expected[3] -= mesh->GetScalarShift(); // scalars are stored shifted
     for (int k = 0; k < 4; ++k)
     {
       const float e = finite ? static_cast<float>(expected[k])
@@ -374,7 +375,8 @@ inline std::string CheckPaperLayout(
       for (int k = 0; k < 4; ++k)
       {
         const float value = gc[0] * v[k][0] + gc[1] * v[k][1] + gc[2] * v[k][2] + gc[3];
-        worst = std::max(worst, std::abs(value - s[tp[4 * t + k]]) / scale);
+        worst = std::max(
+          worst, std::abs(value - (s[tp[4 * t + k]] - mesh->GetScalarShift())) / scale);
       }
     }
   }
@@ -433,7 +435,7 @@ inline std::string CheckCompactLayout(vtkTetMesh* mesh, vtkTetMeshCompactLayout*
       }
     }
     const float expected = !s ? 0.0f
-      : std::isfinite(s[i])   ? static_cast<float>(s[i])
+      : std::isfinite(s[i])   ? static_cast<float>(s[i] - mesh->GetScalarShift())
                               : std::numeric_limits<float>::infinity();
     if (texel[3] != expected)
     {
