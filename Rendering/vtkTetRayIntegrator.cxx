@@ -88,6 +88,9 @@ struct SpectralRule
   GaussLegendreRule<AdaptiveOrder> G;
   double S[AdaptiveOrder][AdaptiveOrder];
   double Tail[2][AdaptiveOrder];
+  // Sum of |Tail[q][k]| over q and k: how much the two last coefficients can grow from an
+  // error of at most 1 in each sample.
+  double TailNorm = 0.0;
   SpectralRule()
   {
     for (int k = 0; k < AdaptiveOrder; ++k)
@@ -104,6 +107,10 @@ struct SpectralRule
             static_cast<double>((2 * n + 1) / 2.0L * G.W[k] * p1);
         }
       }
+    }
+    for (int k = 0; k < AdaptiveOrder; ++k)
+    {
+      this->TailNorm += std::fabs(this->Tail[0][k]) + std::fabs(this->Tail[1][k]);
     }
     for (int k = 0; k < AdaptiveOrder; ++k)
     {
@@ -257,6 +264,9 @@ struct PieceResult
   // Adaptive panels: an estimate of the integration error from how well the samples resolve
   // the attenuation and the emitted light (see vtkInternals::Panel).
   double Unresolved = 0.0;
+  // Adaptive panels: the part of such estimates that rounding the samples' scalars to doubles
+  // alone can cause (see vtkInternals::Panel); bisection cannot reduce an error below it.
+  double Noise = 0.0;
 };
 
 // A piece followed by another: depths add, the second one is seen through the first.
@@ -476,6 +486,46 @@ public:
       unresolved = std::max(unresolved, tail(emission[i]));
     }
     r.Unresolved = 2.0 * h * unresolved;
+
+    // The scalar of a sample is only known to the rounding of sa + (sb - sa) t / len, a few
+    // units in the last place of the larger end. Where the functions are steep in the scalar
+    // (a transfer-function feature a millionth of the range wide, with a huge attenuation),
+    // that rounding moves the samples of tau and of the emission by far more than the
+    // tolerance: the estimates above then stop shrinking with the panel, and bisection went on
+    // resolving rounding noise for ~1e5 panels per segment. Estimate that noise from the
+    // slopes over the panel (the spread of the samples over the panel's scalar span) and the
+    // most the two last coefficients and the halves' comparison can take from it; Adapt()
+    // accepts a panel whose error is below this floor. Where the functions are not that steep
+    // (every ordinary property), the floor is many orders of magnitude below the tolerance
+    // and changes nothing.
+    const double span = std::fabs(sb - sa) * ((b - a) / len);
+    if (span > 0.0)
+    {
+      const double rounding = 4.0 * std::numeric_limits<double>::epsilon() *
+        std::max(std::fabs(sa), std::fabs(sb)) / span;
+      double tauMin = tau[0], tauMax = tau[0];
+      double cMin[3] = { c[0][0], c[0][1], c[0][2] };
+      double cMax[3] = { c[0][0], c[0][1], c[0][2] };
+      for (int k = 1; k < AdaptiveOrder; ++k)
+      {
+        tauMin = std::min(tauMin, tau[k]);
+        tauMax = std::max(tauMax, tau[k]);
+        for (int i = 0; i < 3; ++i)
+        {
+          cMin[i] = std::min(cMin[i], c[k][i]);
+          cMax[i] = std::max(cMax[i], c[k][i]);
+        }
+      }
+      const double tauNoise = rounding * (tauMax - tauMin);
+      double emissionNoise = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        const double cAbs = std::max(std::fabs(cMin[i]), std::fabs(cMax[i]));
+        emissionNoise =
+          std::max(emissionNoise, tauNoise * cAbs + tauMax * rounding * (cMax[i] - cMin[i]));
+      }
+      r.Noise = 2.0 * h * (rule.TailNorm + 2.0) * std::max(tauNoise, emissionNoise);
+    }
     return r;
   }
 
@@ -492,12 +542,14 @@ public:
       err = std::max(err, std::fabs(fine.C[i] - coarse.C[i]));
     }
     err = transmittance * std::max(err, left.Unresolved + right.Unresolved);
+    // What rounding of the samples' scalars can explain (see Panel()) is no error to resolve.
+    const double noise = transmittance * (coarse.Noise + left.Noise + right.Noise);
     // Each panel may use the share of the tolerance its length deserves, and at least 1/64 of
     // it: around a jump the error shrinks only like the panel, so a share proportional to the
     // length would never be met there.
     const double allowed = tolerance * std::max((b - a) / len, 1.0 / 64.0);
     const bool resolved = coarse.Depth <= AdaptivePanelDepth;
-    if ((resolved && err <= allowed) || transmittance < 1e-17)
+    if ((resolved && err <= std::max(allowed, noise)) || transmittance < 1e-17)
     {
       return fine;
     }
