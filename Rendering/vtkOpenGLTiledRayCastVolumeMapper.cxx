@@ -1979,6 +1979,22 @@ bool vtkOpenGLTiledRayCastVolumeMapper::IsSupported(vtkRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+int vtkOpenGLTiledRayCastVolumeMapper::IsRenderSupported(
+  vtkRenderWindow* window, vtkVolumeProperty* vtkNotUsed(property))
+{
+  vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl || this->BlendMode != vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND)
+  {
+    return 0;
+  }
+  if (this->Pipeline == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE)
+  {
+    return vtkTiledRayCastComputeShader::IsSupported(gl) ? 1 : 0;
+  }
+  return vtkOpenGLTiledRayCastVolumeMapper::IsSupported(window) ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->Timer->StartTimer();

@@ -57,6 +57,11 @@ public:
    */
   static bool IsSupported(vtkRenderWindow* window);
 
+  /**
+   * See vtkTiledRayCastVolumeMapper::IsRenderSupported.
+   */
+  int IsRenderSupported(vtkRenderWindow* window, vtkVolumeProperty* property) override;
+
 protected:
   // Statistics every rendered frame ends with (memory, CPU time).
   void FinishRender(vtkIdType renderTargetBytes);

@@ -52,6 +52,12 @@ const char* vtkTiledRayCastVolumeMapper::GetMeshLayoutAsString()
 }
 
 //------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeMapper::IsRenderSupported(vtkRenderWindow*, vtkVolumeProperty*)
+{
+  return 0;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeMapper::GetPipelineAsString()
 {
   switch (this->Pipeline)

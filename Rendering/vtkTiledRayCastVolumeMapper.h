@@ -49,8 +49,10 @@
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeMapper.h"
 
+class vtkRenderWindow;
 class vtkTetMeshValidationReport;
 class vtkTiledRayCastStatistics;
+class vtkVolumeProperty;
 
 class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTiledRayCastVolumeMapper
   : public vtkUnstructuredGridVolumeMapper
@@ -274,6 +276,17 @@ public:
   vtkGetMacro(SynchronousStatistics, bool);
   vtkBooleanMacro(SynchronousStatistics, bool);
   ///@}
+
+  /**
+   * Whether this mapper can render in `window` (a window already rendered once, so that its
+   * OpenGL context exists) with its present settings: the context has what the chosen Pipeline
+   * needs (OpenGL 3.3 or 3.2 with GL_ARB_explicit_attrib_location for the fragment pipeline and
+   * the automatic choice, 4.3 for the compute pipeline) and the blend mode is composite. The
+   * property is not consulted (any vtkVolumeProperty renders; may be null). VTK's name and
+   * signature, as on vtkGPUVolumeRayCastMapper; 0 in this abstract class, the OpenGL
+   * implementation answers.
+   */
+  virtual int IsRenderSupported(vtkRenderWindow* window, vtkVolumeProperty* property);
 
   /**
    * What the last Render() did. Never null.

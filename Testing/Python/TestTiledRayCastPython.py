@@ -78,6 +78,11 @@ class TestTiledRayCastPython(unittest.TestCase):
         self.assertEqual(mapper.GetPipeline(), vtkTiledRayCastVolumeMapper.AUTOMATIC_PIPELINE)
         self.assertEqual(mapper.GetPipelineAsString(), "Automatic")
         self.assertIn(stats.GetPipeline(), ("Compute", "Fragment"))
+        # Support is asked of the public class, VTK's way (vtkGPUVolumeRayCastMapper's name).
+        self.assertEqual(mapper.IsRenderSupported(window, prop), 1)
+        mapper.SetBlendModeToMaximumIntensity()
+        self.assertEqual(mapper.IsRenderSupported(window, prop), 0)
+        mapper.SetBlendModeToComposite()
         if stats.GetPipeline() == "Compute":
             self.assertGreaterEqual(stats.GetNumberOfEntries(), stats.GetNumberOfRays())
             self.assertGreater(stats.GetMeanStepsPerRay(), 1.0)
