@@ -35,29 +35,8 @@
 
 namespace
 {
-// Collects the errors and warnings an object reports (and keeps them out of the test log).
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    this->Text += static_cast<const char*>(data);
-  }
-  int Count = 0;
-  std::string Text;
-};
-
-bool Expect(bool condition, const std::string& what)
-{
-  if (!condition)
-  {
-    std::cerr << "check failed: " << what << "\n";
-  }
-  return condition;
-}
-
+using trctest::Expect;
+using trctest::MessageCounter;
 // Renders `grid` next to an opaque cone and checks that the mapper refused it with an error
 // containing `message`, drew nothing, and left the cone on screen.
 bool Refused(const std::string& label, vtkUnstructuredGrid* grid, const char* message,
@@ -195,27 +174,20 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     s->Modified();
     double range[2];
     spx->GetPointData()->GetScalars()->GetRange(range);
-    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-    mapper->SetInputData(grid);
-    vtkNew<MessageCounter> warnings;
-    mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()));
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddVolume(volume);
-    vtkNew<vtkRenderWindow> window;
-    window->SetMultiSamples(0);
-    window->SetSize(96, 96);
-    window->AddRenderer(renderer);
-    renderer->ResetCamera();
-    window->Render();
-    ok = Expect(mapper->GetValidationReport()->GetNumberOfNonFiniteScalars() > 0,
+    trctest::WatchedVolume scene(
+      grid, trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()), 96);
+    scene.Window->Render();
+    ok = Expect(scene.Mapper->GetValidationReport()->GetNumberOfNonFiniteScalars() > 0,
            "NaN scalars are counted") &&
       ok;
-    ok = Expect(warnings->Text.find("NaN") != std::string::npos, "NaN scalars are reported") && ok;
-    ok = Expect(mapper->GetStatistics()->GetRendered(), "a mesh with NaN scalars renders") && ok;
-    ok = trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), "NaN") && ok;
+    ok =
+      Expect(scene.Warnings->Text.find("NaN") != std::string::npos, "NaN scalars are reported") &&
+      ok;
+    ok =
+      Expect(scene.Mapper->GetStatistics()->GetRendered(), "a mesh with NaN scalars renders") && ok;
+    ok = trctest::CheckAgainstReference(
+           scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "NaN") &&
+      ok;
   }
 
   // Normal service is not a warning: spx with every other tetrahedron inverted (two points
@@ -250,35 +222,20 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
       {
         return EXIT_FAILURE;
       }
-      double range[2];
-      grid->GetPointData()->GetScalars()->GetRange(range);
-      vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-      mapper->SetInputData(grid);
-      vtkNew<MessageCounter> warnings;
-      mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()));
-      vtkNew<vtkRenderer> renderer;
-      renderer->AddVolume(volume);
-      vtkNew<vtkRenderWindow> window;
-      window->SetMultiSamples(0);
-      window->SetSize(64, 64);
-      window->AddRenderer(renderer);
-      renderer->ResetCamera();
-      window->Render();
-      vtkTetMeshValidationReport* report = mapper->GetValidationReport();
+      trctest::WatchedVolume scene(grid, trctest::MakePropertyFor(grid, 0.1), 64);
+      scene.Window->Render();
+      vtkTetMeshValidationReport* report = scene.Mapper->GetValidationReport();
       const bool invertedCase = grid == inverted.Get();
       ok = Expect(invertedCase ? report->GetNumberOfInvertedTetrahedra() > 0
                                : report->GetNumberOfSplitCells() == 27,
              invertedCase ? "inverted tetrahedra are counted" : "27 hexahedra are split") &&
         ok;
-      ok = Expect(warnings->Count == 0,
+      ok = Expect(scene.Warnings->Count == 0,
              std::string(invertedCase ? "reoriented" : "split") +
-               " cells render without a warning (" + warnings->Text + ")") &&
+               " cells render without a warning (" + scene.Warnings->Text + ")") &&
         ok;
-      ok = trctest::CheckAgainstReference(
-             window, renderer, volume, trctest::Bounds(), invertedCase ? "reoriented" : "split") &&
+      ok = trctest::CheckAgainstReference(scene.Window, scene.Renderer, scene.Volume,
+             trctest::Bounds(), invertedCase ? "reoriented" : "split") &&
         ok;
     }
   }
@@ -287,38 +244,23 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   // the first frame only; an opaque actor brings none.
   for (double opacity : { 1.0, 0.4 })
   {
-    double range[2];
-    spx->GetPointData()->GetScalars()->GetRange(range);
-    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-    mapper->SetInputData(spx);
-    vtkNew<MessageCounter> warnings;
-    mapper->AddObserver(vtkCommand::WarningEvent, warnings);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(trctest::MakeProperty(range[0], range[1], 0.1 * spx->GetLength()));
+    trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
     vtkNew<vtkConeSource> cone;
     vtkNew<vtkPolyDataMapper> coneMapper;
     coneMapper->SetInputConnection(cone->GetOutputPort());
     vtkNew<vtkActor> actor;
     actor->SetMapper(coneMapper);
     actor->GetProperty()->SetOpacity(opacity);
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddVolume(volume);
-    renderer->AddActor(actor);
-    vtkNew<vtkRenderWindow> window;
-    window->SetMultiSamples(0);
-    window->SetSize(64, 64);
-    window->AddRenderer(renderer);
-    renderer->ResetCamera();
-    window->Render();
-    window->Render();
+    scene.Renderer->AddActor(actor);
+    scene.Window->Render();
+    scene.Window->Render();
     const int expected = opacity < 1.0 ? 1 : 0;
-    ok = Expect(warnings->Count == expected &&
-             (expected == 0 || warnings->Text.find("Translucent") != std::string::npos),
+    ok = Expect(scene.Warnings->Count == expected &&
+             (expected == 0 || scene.Warnings->Text.find("Translucent") != std::string::npos),
            std::string(expected ? "one warning for translucent geometry"
                                 : "no warning for an "
                                   "opaque actor") +
-             " (" + warnings->Text + ")") &&
+             " (" + scene.Warnings->Text + ")") &&
       ok;
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

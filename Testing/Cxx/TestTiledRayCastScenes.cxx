@@ -38,6 +38,7 @@
 
 namespace
 {
+using trctest::Expect;
 struct Scene
 {
   vtkNew<vtkRenderWindow> Window;
@@ -79,15 +80,6 @@ struct Scene
     this->Renderer->ResetCameraClippingRange();
   }
 };
-
-bool Expect(bool condition, const char* what)
-{
-  if (!condition)
-  {
-    std::cerr << "check failed: " << what << "\n";
-  }
-  return condition;
-}
 
 bool RenderedWith(Scene& t, const char* pipeline)
 {

@@ -18,15 +18,7 @@
 
 namespace
 {
-bool Expect(bool condition, const std::string& what)
-{
-  if (!condition)
-  {
-    std::cerr << "check failed: " << what << "\n";
-  }
-  return condition;
-}
-
+using trctest::Expect;
 vtkIdType Uploaded(vtkTiledRayCastVolumeMapper* mapper)
 {
   return mapper->GetStatistics()->GetUploadedBytes();

@@ -16,6 +16,7 @@
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
@@ -43,6 +44,54 @@
 
 namespace trctest
 {
+// Prints what failed; returns the condition (checks are chained with `ok = Expect(...) && ok`).
+inline bool Expect(bool condition, const std::string& what)
+{
+  if (!condition)
+  {
+    std::cerr << "check failed: " << what << "\n";
+  }
+  return condition;
+}
+
+// Collects the errors or warnings an object reports (and keeps them out of the test log).
+class MessageCounter : public vtkCommand
+{
+public:
+  static MessageCounter* New() { return new MessageCounter; }
+  void Execute(vtkObject*, unsigned long, void* data) override
+  {
+    ++this->Count;
+    this->Text += static_cast<const char*>(data);
+  }
+  int Count = 0;
+  std::string Text;
+};
+
+// A mapper of `grid` with `property`, its warnings counted, alone in a window of `size` pixels
+// (not yet rendered, camera reset).
+struct WatchedVolume
+{
+  vtkNew<vtkTiledRayCastVolumeMapper> Mapper;
+  vtkNew<MessageCounter> Warnings;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  WatchedVolume(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, int size)
+  {
+    this->Mapper->SetInputData(grid);
+    this->Mapper->AddObserver(vtkCommand::WarningEvent, this->Warnings);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(property);
+    this->Renderer->AddVolume(this->Volume);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(size, size);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->ResetCamera();
+  }
+};
+
 // A mesh of Testing/Data/Meshes, found through the test driver's -D argument.
 inline vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(int argc, char* argv[], const char* file)
 {
