@@ -557,8 +557,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  // The entry pass culled by the volume's handedness; the screen rectangle must not be culled.
-  state->vtkglDisable(GL_CULL_FACE);
   this->Compute.Composite(frame);
   this->StopPhase(this->PhaseTimers[PhaseCompositing]);
 
@@ -1495,6 +1493,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
     2.0f * y1 / h - 1.0f };
   program.Shader->SetUniform4f("in_rectangle", rect);
   program.Shader->SetUniformf("in_rectangleDepth", RectangleDepth);
+  // A screen rectangle is never culled: the boundary passes cull by the volume's handedness,
+  // front faces (counter-clockwise, like the rectangle) when its matrix mirrors.
+  this->CheckedWindow->GetState()->vtkglDisable(GL_CULL_FACE);
   program.VAO->Bind();
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
@@ -1675,7 +1676,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
   state->vtkglDepthMask(GL_TRUE);
   state->vtkglClearDepth(1.0);
   state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  state->vtkglDisable(GL_CULL_FACE);
 
   // Count the active rays of every tile. The GPU skips the passes of a tile whose count is zero
   // (conditional rendering), and the CPU never waits for these counts.
@@ -1788,12 +1788,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
   vtkOpenGLState* state = window->GetState();
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
 
-  // Bring every tile to set 0, then count the rays that became opaque. Screen rectangles are
-  // never culled: the last peel culled by the volume's handedness, and a mirroring matrix
-  // culls front faces, counter-clockwise like the rectangles.
+  // Bring every tile to set 0, then count the rays that became opaque.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
-  state->vtkglDisable(GL_CULL_FACE);
   for (Tile& tile : this->Tiles)
   {
     if (tile.Parity == 1)

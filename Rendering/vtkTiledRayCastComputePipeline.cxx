@@ -414,6 +414,9 @@ void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
   const float rectangle[4] = { -1.f, -1.f, 1.f, 1.f };
   p->SetUniform4f("in_rectangle", rectangle);
   p->SetUniformf("in_rectangleDepth", 0.f);
+  // Never culled: the entry pass culls by the volume's handedness, front faces (counter-clockwise,
+  // like this rectangle) when its matrix mirrors.
+  frame.Window->GetState()->vtkglDisable(GL_CULL_FACE);
   this->CompositeProgram.VAO->Bind();
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
 }
