@@ -84,19 +84,35 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
     text << "nothing rendered";
     return text.str();
   }
+  // Each pipeline's own counts: entries and tets per ray (compute), peels and passes per tile
+  // (fragment).
+  const bool compute = this->Pipeline && std::string(this->Pipeline) == "Compute";
   text << (this->Pipeline ? this->Pipeline : "?") << " pipeline, " << this->ImageSize[0] << "x"
-       << this->ImageSize[1] << " px, " << this->NumberOfRays << " rays ("
-       << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay << "), "
-       << this->NumberOfEntries << " entries, " << this->NumberOfLayers << " layers ("
-       << this->NumberOfPeelPasses << " peel passes), " << this->NumberOfTiles << " tiles ("
-       << this->NumberOfTilesSkipped << " skipped), " << this->NumberOfRayCastPasses
-       << " ray-casting passes (per tile min " << this->MinimumPassesPerTile << ", median "
-       << this->MedianPassesPerTile << ", max " << this->MaximumPassesPerTile << "), "
-       << this->NumberOfRaysTerminatedEarly << " rays terminated early; GPU ms: first hit "
-       << this->FirstHitTime << ", peeling " << this->PeelingTime << ", ray casting "
-       << this->RayCastingTime << ", compositing " << this->CompositingTime << ", total "
-       << this->TotalGPUTime << "; GPU memory " << this->GetTotalGPUBytes() << " B (mesh "
-       << this->MeshBytes << " B, " << this->MeshBytesPerTetrahedron << " B/tet)";
+       << this->ImageSize[1] << " px, " << this->NumberOfRays << " rays";
+  if (compute)
+  {
+    text << " (" << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay
+         << "), " << this->NumberOfEntries << " entries, " << this->NumberOfLayers << " layers, "
+         << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped << " empty)";
+  }
+  else
+  {
+    text << ", " << this->NumberOfLayers << " layers (" << this->NumberOfPeelPasses
+         << " peel passes), " << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped
+         << " skipped), " << this->NumberOfRayCastPasses << " ray-casting passes (per tile min "
+         << this->MinimumPassesPerTile << ", median " << this->MedianPassesPerTile << ", max "
+         << this->MaximumPassesPerTile << ")";
+  }
+  text << ", " << this->NumberOfRaysTerminatedEarly
+       << " rays terminated early; GPU ms: " << (compute ? "entry pass " : "first hit ")
+       << this->FirstHitTime;
+  if (!compute)
+  {
+    text << ", peeling " << this->PeelingTime;
+  }
+  text << ", ray casting " << this->RayCastingTime << ", compositing " << this->CompositingTime
+       << ", total " << this->TotalGPUTime << "; GPU memory " << this->GetTotalGPUBytes()
+       << " B (mesh " << this->MeshBytes << " B, " << this->MeshBytesPerTetrahedron << " B/tet)";
   return text.str();
 }
 

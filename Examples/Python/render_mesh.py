@@ -54,9 +54,14 @@ def main(argv):
     parser.add_argument("--mode", choices=sorted(MODES), default="partial",
                         help="integration: partial pre-integration, 3D or 2D table")
     parser.add_argument("--layout", choices=sorted(LAYOUTS), default="compact")
+    parser.add_argument("--pipeline", choices=["automatic", "compute", "fragment"],
+                        default="automatic",
+                        help="compute shaders (OpenGL 4.3), the paper's fragment pipeline, or "
+                             "compute where the context has it")
     parser.add_argument("--tets-per-pass", type=int, default=None,
-                        help="tetrahedra per ray-casting pass (0: unlimited)")
-    parser.add_argument("--tile-size", type=int, default=None, help="tile side in pixels")
+                        help="fragment pipeline: tetrahedra per ray-casting pass (0: unlimited)")
+    parser.add_argument("--tile-size", type=int, default=None,
+                        help="fragment pipeline: tile side in pixels")
     parser.add_argument("--azimuth", type=float, default=30.0)
     parser.add_argument("--elevation", type=float, default=20.0)
     parser.add_argument("--frames", type=int, default=1, help="render this many frames")
@@ -100,6 +105,8 @@ def main(argv):
         mapper.SelectScalarArray(args.array)
     mapper.SetIntegrationMode(MODES[args.mode])
     mapper.SetMeshLayout(LAYOUTS[args.layout])
+    {"automatic": mapper.SetPipelineToAutomatic, "compute": mapper.SetPipelineToCompute,
+     "fragment": mapper.SetPipelineToFragment}[args.pipeline]()
     if args.tets_per_pass is not None:
         mapper.SetTetsPerPass(args.tets_per_pass)
     if args.tile_size is not None:
@@ -144,9 +151,12 @@ def main(argv):
                           if line.startswith("OpenGL renderer string")), "(unknown)")
     print(f"OpenGL: {renderer_line}")
     print(f"mesh {os.path.basename(args.mesh)}: {mapper.GetValidationReport().GetSummary()}")
-    print(f"mapper: {mapper.GetIntegrationModeAsString()} integration, "
-          f"{mapper.GetMeshLayoutAsString()} layout, {mapper.GetTetsPerPass()} tets per pass, "
-          f"tiles of {mapper.GetTileSize()} px")
+    # Tets per pass and tile size are the fragment pipeline's settings only.
+    fragment = (f", {mapper.GetTetsPerPass()} tets per pass, tiles of {mapper.GetTileSize()} px"
+                if stats.GetPipeline() == "Fragment" else "")
+    print(f"mapper: {mapper.GetPipelineAsString()} pipeline, "
+          f"{mapper.GetIntegrationModeAsString()} integration, "
+          f"{mapper.GetMeshLayoutAsString()} layout{fragment}")
     print(f"render: {stats.GetSummary()}")
     print(f"wrote {args.output}")
     return 0
