@@ -526,9 +526,17 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.Mirrored = this->Geometry.Mirrored;
   frame.MaximumSteps = this->GetMaximumSteps();
   frame.PeelEpsilon = PeelEpsilon;
+  frame.Verify = this->Self->SynchronousStatistics;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
 
+  std::string error;
+  if (!this->Compute.BeginFrame(frame, stats, error))
+  {
+    window->GetState()->PopFramebufferBindings();
+    this->ReportError(error);
+    return false;
+  }
   {
     ScopedDebugEvent event("ListEntries");
     this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
@@ -538,10 +546,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   {
     ScopedDebugEvent event("Traverse");
     this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
-    this->Compute.Traverse(frame, *this, stats);
+    this->Compute.Traverse(frame, *this);
     this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
   }
-  std::string error;
   const bool ok = this->Compute.FinishEntries(frame, *this, stats, error);
 
   // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
@@ -2148,6 +2155,17 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                     << " rays reached the bound of steps in one boundary layer and were "
                        "stopped; the mesh's neighbour links may loop.");
     impl->WarnedStoppedRays = true;
+  }
+  const vtkIdType incomplete = impl->UseCompute ? impl->Compute.TakeNumberOfRaysIncomplete() : 0;
+  if (incomplete > 0)
+  {
+    // Every time: each is a frame drawn with layers missing, which the next frames are not.
+    vtkWarningMacro(<< incomplete
+                    << " rays of a recent frame missed boundary layers: the view asked for "
+                    << stats->GetNumberOfEntries()
+                    << " ray entries, far more than the frames before it, and three rounds of "
+                       "the entry list did not hold them. The list has grown to fit; turn "
+                       "SynchronousStatistics on to verify every frame.");
   }
   // Per pixel: the compute pipeline's targets and the scene depth (4 B); or two sets of state,
   // colour and entry (16 B each) and two depth buffers.

@@ -25,6 +25,7 @@
 #include "vtkTiledRayCastBoundaryFaceVS.h"
 #include "vtkTiledRayCastCompositeFS.h"
 #include "vtkTiledRayCastEntryList.h"
+#include "vtkTiledRayCastEntryRoundCS.h"
 #include "vtkTiledRayCastNearSliceFS.h"
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
@@ -48,6 +49,16 @@ const unsigned int RayCountsBinding = 2;
 const vtkIdType WordsPerEntry = 3;
 const int GroupWidth = 8;
 const int GroupHeight = 4;
+// Rounds of the entry list in one frame, all queued every frame (the rounds not needed draw
+// and dispatch nothing): the list, sized from earlier frames, lists the pixels that did not
+// fit again in the second and the third.
+const int EntryRounds = 3;
+// Byte offsets of trcEntryCountBuffer (vtkTiledRayCastEntryList.glsl): the count, then the
+// indirect commands of the next round.
+const size_t FaceDrawOffset = 4;
+const size_t SliceDrawOffset = 20;
+const size_t GroupsOffset = 36;
+const size_t EntryCountBytes = 48;
 
 // The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
 enum RayCount
@@ -61,6 +72,9 @@ enum RayCount
   CountMaximumSteps,
   CountStopped,
   CountEmptyGroups,
+  CountEntriesAsked,
+  CountEntryRounds,
+  CountIncomplete,
   NumberOfRayCounts
 };
 
@@ -149,13 +163,16 @@ bool vtkTiledRayCastComputePipeline::UpdatePrograms(
   {
     return false;
   }
-  const std::string traversal = Substituted(vtkTiledRayCastTraversalCS, replacements);
-  if (traversal != this->Traversal->GetSource() || !this->Traversal->GetHandle())
+  for (auto* compute : { &this->Traversal, &this->EntryRound })
   {
-    if (!this->Traversal->Build(traversal))
+    vtkTiledRayCastComputeShader* shader = *compute;
+    const std::string source = Substituted(
+      compute == &this->Traversal ? vtkTiledRayCastTraversalCS : vtkTiledRayCastEntryRoundCS,
+      replacements);
+    if ((source != shader->GetSource() || !shader->GetHandle()) && !shader->Build(source))
     {
-      error = "The compute shader of the tiled ray caster failed to build (" +
-        this->Traversal->GetError() + "). Nothing is drawn.";
+      error = "A compute shader of the tiled ray caster failed to build (" + shader->GetError() +
+        "). Nothing is drawn.";
       return false;
     }
   }
@@ -205,7 +222,7 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   // One entry per pixel to start with; the list grows to what views need (ListEntries).
   ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
-  ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t));
+  ok = ok && this->EntryCount.Allocate(EntryCountBytes);
   for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
   {
     ok = ok && counts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
@@ -237,6 +254,7 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   this->TargetSize[0] = width;
   this->TargetSize[1] = height;
   this->CountsPending[0] = this->CountsPending[1] = false;
+  this->Verified = false;
   return true;
 }
 
@@ -249,11 +267,11 @@ bool vtkTiledRayCastComputePipeline::GrowEntries(vtkIdType needed, std::string& 
   }
   // A quarter more than asked, so that a slowly changing view does not grow it every frame.
   vtkIdType capacity = needed + needed / 4 + 4096;
-  const vtkIdType limit = 0x7FFFFFFF; // node indices + 1 fit in 31 bits
+  const vtkIdType limit = 0x3FFFFFFF; // node indices + 1 fit in 30 bits (TRC_ENTRY_NODE)
   if (needed > limit)
   {
     error = "The view needs more ray entries (" + std::to_string(needed) +
-      ") than the compute pipeline can list (2^31). Nothing is drawn.";
+      ") than the compute pipeline can list (2^30). Nothing is drawn.";
     return false;
   }
   capacity = std::min(capacity, limit);
@@ -280,53 +298,8 @@ void vtkTiledRayCastComputePipeline::BindBuffers()
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::ListEntries(
-  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
-{
-  vtkOpenGLRenderWindow* window = frame.Window;
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLShaderCache* cache = window->GetShaderCache();
-  state->PushDrawFramebufferBinding();
-  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  vtkOpenGLState::ScopedglColorMask colorMask(state);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-
-  this->EntryCount.Write(0, sizeof(std::uint32_t));
-  this->BindBuffers();
-  const int capacity = static_cast<int>(this->EntryCapacity);
-  if (frame.NearPlaneCutsMesh)
-  {
-    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
-    state->vtkglDisable(GL_CULL_FACE);
-    cache->ReadyShaderProgram(this->NearSliceProgram.Shader);
-    vtkShaderProgram* p = this->NearSliceProgram.Shader;
-    setup.SetFrameUniforms(p);
-    setup.SetMeshUniforms(p);
-    p->SetUniformi("in_entryCapacity", capacity);
-    this->NearSliceProgram.VAO->Bind();
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
-  }
-  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(frame.Mirrored ? GL_FRONT : GL_BACK);
-  cache->ReadyShaderProgram(this->FacesProgram.Shader);
-  vtkShaderProgram* p = this->FacesProgram.Shader;
-  setup.SetFrameUniforms(p);
-  setup.SetMeshUniforms(p);
-  setup.SetCoverageUniforms(p);
-  p->SetUniformi("in_entryCapacity", capacity);
-  this->FacesProgram.VAO->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
-  vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
-    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  state->PopDrawFramebufferBinding();
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::Traverse(
-  const Frame& frame, vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats)
+bool vtkTiledRayCastComputePipeline::BeginFrame(
+  const Frame& frame, vtkTiledRayCastStatistics* stats, std::string& error)
 {
   // The previous frame's counts if they have arrived, else the older ones in the other buffer
   // (waiting for them holds the CPU at most two frames ahead of the GPU), which this frame
@@ -352,15 +325,124 @@ void vtkTiledRayCastComputePipeline::Traverse(
     }
   }
   this->CountsBuffer = next;
-  this->Dispatch(frame, setup);
+
+  // A frame is verified (its counts read before Render() returns, the list grown and the
+  // frame drawn again if the rounds did not suffice) when asked, and when nothing is known
+  // yet of what this mesh asks for at this image size.
+  this->Verifying = frame.Verify || !this->Verified ||
+    frame.NumberOfBoundaryFaces != this->ListedFaces ||
+    frame.NumberOfTetrahedra != this->ListedTetrahedra;
+  this->ListedFaces = frame.NumberOfBoundaryFaces;
+  this->ListedTetrahedra = frame.NumberOfTetrahedra;
+  // A quarter to spare over what the latest view counted asked for (GrowEntries adds another),
+  // and room for its mean entries per ray at every pixel, up to two (24 B a pixel): a camera
+  // that comes closer then needs no second round for meshes of one or two boundary layers.
+  const double perRay = this->RaysCounted > 0
+    ? std::min(2.0, static_cast<double>(this->EntriesAsked) / this->RaysCounted)
+    : 0.0;
+  const vtkIdType wanted = std::max(this->EntriesAsked + this->EntriesAsked / 4,
+    static_cast<vtkIdType>(perRay * frame.Width * frame.Height));
+  return this->GrowEntries(wanted, error);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ListEntries(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+{
+  this->EntryCount.Write(0, sizeof(std::uint32_t));
+  this->DrawEntries(frame, setup, 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::DrawEntries(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round)
+{
+  vtkOpenGLRenderWindow* window = frame.Window;
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  state->PushDrawFramebufferBinding();
+  this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  vtkOpenGLState::ScopedglColorMask colorMask(state);
+  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_FALSE);
+
+  this->BindBuffers();
+  if (round > 1)
+  {
+    this->EntryCount.BindIndirect();
+  }
+  const int capacity = static_cast<int>(this->EntryCapacity);
+  if (frame.NearPlaneCutsMesh)
+  {
+    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
+    state->vtkglDisable(GL_CULL_FACE);
+    cache->ReadyShaderProgram(this->NearSliceProgram.Shader);
+    vtkShaderProgram* p = this->NearSliceProgram.Shader;
+    setup.SetFrameUniforms(p);
+    setup.SetMeshUniforms(p);
+    p->SetUniformi("in_entryCapacity", capacity);
+    p->SetUniformi("in_entryRound", round);
+    this->NearSliceProgram.VAO->Bind();
+    if (round == 1)
+    {
+      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
+    }
+    else
+    {
+      vtkTiledRayCastComputeShader::DrawArraysIndirect(GL_POINTS, SliceDrawOffset);
+    }
+  }
+  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(frame.Mirrored ? GL_FRONT : GL_BACK);
+  cache->ReadyShaderProgram(this->FacesProgram.Shader);
+  vtkShaderProgram* p = this->FacesProgram.Shader;
+  setup.SetFrameUniforms(p);
+  setup.SetMeshUniforms(p);
+  setup.SetCoverageUniforms(p);
+  p->SetUniformi("in_entryCapacity", capacity);
+  p->SetUniformi("in_entryRound", round);
+  this->FacesProgram.VAO->Bind();
+  if (round == 1)
+  {
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
+  }
+  else
+  {
+    vtkTiledRayCastComputeShader::DrawArraysIndirect(GL_TRIANGLES, FaceDrawOffset);
+    vtkTiledRayCastStorageBuffer::UnbindIndirect();
+  }
+  vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  state->PopDrawFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+{
+  vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
+  counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
+  for (int round = 1; round <= EntryRounds; ++round)
+  {
+    if (round > 1)
+    {
+      this->DrawEntries(frame, setup, round);
+    }
+    this->Dispatch(frame, setup, round);
+    if (round < EntryRounds)
+    {
+      this->DecideNextRound(frame, round);
+    }
+  }
+  counts.MarkWritten();
+  this->CountsPending[this->CountsBuffer] = true;
 }
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::Dispatch(
-  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round)
 {
-  vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
-  counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
   vtkTiledRayCastComputeShader* traversal = this->Traversal;
   traversal->Use(frame.Window);
   setup.SetFrameUniforms(traversal);
@@ -370,40 +452,71 @@ void vtkTiledRayCastComputePipeline::Dispatch(
   traversal->SetUniform2i("in_imageSize", size);
   traversal->SetUniformi("in_maximumSteps", frame.MaximumSteps);
   traversal->SetUniformf("in_peelEpsilon", frame.PeelEpsilon);
+  traversal->SetUniformi("in_entryRound", round);
+  traversal->SetUniformi("in_lastRound", round == EntryRounds ? 1 : 0);
   this->BindBuffers();
-  traversal->Dispatch(
-    (frame.Width + GroupWidth - 1) / GroupWidth, (frame.Height + GroupHeight - 1) / GroupHeight);
+  if (round == 1)
+  {
+    traversal->Dispatch(
+      (frame.Width + GroupWidth - 1) / GroupWidth, (frame.Height + GroupHeight - 1) / GroupHeight);
+  }
+  else
+  {
+    this->EntryCount.BindIndirect();
+    traversal->DispatchIndirect(GroupsOffset);
+    vtkTiledRayCastStorageBuffer::UnbindIndirect();
+  }
   vtkTiledRayCastComputeShader::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_STORAGE_BARRIER_BIT);
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
-  counts.MarkWritten();
-  this->CountsPending[this->CountsBuffer] = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::DecideNextRound(const Frame& frame, int round)
+{
+  vtkTiledRayCastComputeShader* decide = this->EntryRound;
+  decide->Use(frame.Window);
+  decide->SetUniformi("in_entryRound", round);
+  decide->SetUniformi("in_entryCapacity", static_cast<int>(this->EntryCapacity));
+  decide->SetUniformi("in_faceVertices", static_cast<int>(3 * frame.NumberOfBoundaryFaces));
+  decide->SetUniformi(
+    "in_sliceVertices", frame.NearPlaneCutsMesh ? static_cast<int>(frame.NumberOfTetrahedra) : 0);
+  const int groups[2] = { (frame.Width + GroupWidth - 1) / GroupWidth,
+    (frame.Height + GroupHeight - 1) / GroupHeight };
+  decide->SetUniform2i("in_groups", groups);
+  this->EntryCount.BindBase(EntryCountBinding);
+  this->RayCounts[this->CountsBuffer].BindBase(RayCountsBinding);
+  decide->Dispatch(1, 1);
+  vtkTiledRayCastComputeShader::Barrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
   vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats, std::string& error)
 {
-  // Waits for the entry pass only: the traversal queued after it goes on meanwhile.
-  std::uint32_t entries = 0;
-  this->EntryCount.Read(0, sizeof(entries), &entries);
-  if (entries > this->EntryCapacity)
+  if (!this->Verifying)
   {
-    // The list was too short for this view, and the traversal missed entries (it has emptied
-    // the lists all the same): grow, then list and walk again. The second time always fits.
-    if (!this->GrowEntries(entries, error))
+    return true; // Render() returns without waiting: the counts arrive with a later frame
+  }
+  this->ReadCounts(stats);
+  if (this->RaysIncomplete > 0)
+  {
+    // Three rounds did not list this view (the first frame of a mesh, or a view that asks for
+    // far more than the last): grow to what it asked for and draw it again, in one round.
+    if (!this->GrowEntries(this->EntriesAsked, error))
     {
       return false;
     }
     this->ListEntries(frame, setup);
-    this->Dispatch(frame, setup);
-    this->EntryCount.Read(0, sizeof(entries), &entries);
+    this->Traverse(frame, setup);
+    this->ReadCounts(stats);
   }
-  stats->SetNumberOfEntries(entries);
+  this->Verified = true;
   return true;
 }
+
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
 {
@@ -445,7 +558,13 @@ void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastS
     (static_cast<std::uint64_t>(counts[CountStepsHigh]) << 32) | counts[CountStepsLow]));
   stats->SetMaximumStepsPerRay(counts[CountMaximumSteps]);
   stats->SetNumberOfTilesSkipped(static_cast<int>(counts[CountEmptyGroups]));
+  stats->SetNumberOfEntries(counts[CountEntriesAsked]);
+  stats->SetNumberOfEntryRounds(1 + static_cast<int>(counts[CountEntryRounds]));
+  stats->SetNumberOfIncompleteRays(counts[CountIncomplete]);
   this->RaysStopped = counts[CountStopped];
+  this->RaysIncomplete = counts[CountIncomplete];
+  this->EntriesAsked = counts[CountEntriesAsked];
+  this->RaysCounted = counts[CountRays];
 }
 
 //------------------------------------------------------------------------------
@@ -466,6 +585,7 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
     p->Key.clear();
   }
   this->Traversal->ReleaseProgram();
+  this->EntryRound->ReleaseProgram();
   this->EntryHeads->ReleaseGraphicsResources(window);
   this->Color->ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);
@@ -476,6 +596,9 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
     counts.ReleaseGraphicsResources();
   }
   this->EntryCapacity = 0;
+  this->EntriesAsked = 0;
+  this->RaysCounted = 0;
+  this->Verified = false;
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->CountsPending[0] = this->CountsPending[1] = false;
 }

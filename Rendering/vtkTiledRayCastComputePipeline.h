@@ -21,16 +21,21 @@
  *    fragment pipeline) and, where the near plane cuts the mesh, the near-plane slices are
  *    rasterised once; every fragment appends (lambda, tet and face) to its pixel's list. This
  *    replaces the first hit and every depth-peeling pass.
- * 2. Traverse: one invocation per pixel (8x8 workgroups) takes its entries in depth order and
+ * 2. Traverse: one invocation per pixel (8x4 workgroups) takes its entries in depth order and
  *    walks the ray through every layer, with the same walk (vtkTiledRayCastWalk.glsl) and the
  *    same peeling rules as the fragment pipeline. The ray state stays in registers; the colour
  *    is written once (RGBA16); the list heads are reset for the next frame as they are read, so
  *    nothing is cleared. The GPU counts rays, steps, layers and terminations per workgroup.
- * 3. FinishEntries: the list buffer grows to what the view needs. With the traversal already
- *    queued, the CPU reads the number of entries (4 bytes, ready once the entry pass is done,
- *    while the GPU goes on with the traversal); where the buffer was too short (the first
- *    frame of a view with more than 1.25 entries per pixel) it grows and both passes run
- *    again. This is the one GPU result a frame waits for, and the GPU never waits for the CPU.
+ *    Entry rounds: the list is sized from the counts of earlier frames (BeginFrame), never
+ *    from this frame's, so Render() does not wait for the GPU. Where this view asks for more,
+ *    the GPU lists again, in a second and a third round, the pixels whose entries did not fit
+ *    (vtkTiledRayCastEntryList.glsl, vtkTiledRayCastEntryRoundCS.glsl: indirect draws and
+ *    dispatches, queued every frame, empty when not needed).
+ * 3. FinishEntries, on verified frames only (SynchronousStatistics, the first frame of a mesh
+ *    or image size): waits for the frame's counts and, if three rounds did not hold the view,
+ *    grows the list and draws the frame again. On other frames such rays (a view asking for
+ *    several times the entries of the frame before) miss layers, are counted, and the mapper
+ *    warns; the list has grown by the next frame.
  * 4. Composite: one light full-screen pass blends the colour into VTK's framebuffer.
  *
  * The counts of a frame are read without waiting during a later frame (double-buffered, with
@@ -113,26 +118,34 @@ public:
     bool NearPlaneCutsMesh = false;
     bool Mirrored = false;
     int MaximumSteps = 0;
+    bool Verify = false; // wait for this frame's counts (SynchronousStatistics)
     float PeelEpsilon = 0;
     float ViewportOrigin[2] = { 0, 0 };
   };
 
   /**
-   * Phase 1, into the pipeline's own framebuffer (the caller has pushed the framebuffer
-   * bindings and set the viewport to the image).
+   * Before the frame: puts the latest counts that have arrived in the statistics, sizes the
+   * entry list from them, and decides whether this frame is verified (FinishEntries). False
+   * with a message when the list cannot grow.
+   */
+  bool BeginFrame(const Frame& frame, vtkTiledRayCastStatistics* stats, std::string& error);
+
+  /**
+   * Phase 1, the first round of the entry list, into the pipeline's own framebuffer (the
+   * caller has pushed the framebuffer bindings and set the viewport to the image).
    */
   void ListEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
 
   /**
-   * Phase 2: the traversal dispatch. Puts the latest counts that have arrived in the
-   * statistics first.
+   * Phase 2: the traversal dispatch, then the later rounds of the entry list and their
+   * dispatches, decided on the GPU (no-ops unless the list lost entries).
    */
-  void Traverse(
-    const Frame& frame, vtkTiledRayCastProgramSetup& setup, vtkTiledRayCastStatistics* stats);
+  void Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
 
   /**
-   * Phase 3: the number of entries, and both passes again where the list was too short. False
-   * with a message when the list cannot grow to what the view needs.
+   * Phase 3, on verified frames only (else it returns at once): waits for the frame's counts
+   * and, if rays remained incomplete after the rounds, grows the list to what the view asked
+   * for and draws the frame again. False with a message when the list cannot grow.
    */
   bool FinishEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
     vtkTiledRayCastStatistics* stats, std::string& error);
@@ -152,6 +165,18 @@ public:
    * neighbour links loop): the mapper warns.
    */
   vtkIdType GetNumberOfRaysStopped() const { return this->RaysStopped; }
+
+  /**
+   * Rays of the counts read since the last call that missed entries after every round (a view
+   * asking for far more entries than the frames before it; never on a verified frame): the
+   * mapper warns.
+   */
+  vtkIdType TakeNumberOfRaysIncomplete()
+  {
+    const vtkIdType incomplete = this->RaysIncomplete;
+    this->RaysIncomplete = 0;
+    return incomplete;
+  }
 
   /**
    * The traversal's workgroups (its tiles) for a frame.
@@ -184,13 +209,16 @@ private:
     const std::string& fs, const std::string& gs, std::string& error);
   void BindBuffers();
   bool GrowEntries(vtkIdType needed, std::string& error);
-  void Dispatch(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
+  void DrawEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round);
+  void Dispatch(const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round);
+  void DecideNextRound(const Frame& frame, int round);
   void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
 
   RasterProgram FacesProgram;
   RasterProgram NearSliceProgram;
   RasterProgram CompositeProgram;
   vtkNew<vtkTiledRayCastComputeShader> Traversal;
+  vtkNew<vtkTiledRayCastComputeShader> EntryRound;
 
   vtkNew<vtkTextureObject> EntryHeads;
   vtkNew<vtkTextureObject> Color;
@@ -204,6 +232,15 @@ private:
   vtkIdType EntryCapacity = 0;
   int TargetSize[2] = { 0, 0 };
   vtkIdType RaysStopped = 0;
+  vtkIdType RaysIncomplete = 0;
+  vtkIdType EntriesAsked = 0; // by the latest view counted
+  vtkIdType RaysCounted = 0;  // and its rays
+  // Whether a frame was verified since the targets were allocated, this frame is, and the
+  // mesh the list was last sized for.
+  bool Verified = false;
+  bool Verifying = false;
+  vtkIdType ListedFaces = 0;
+  vtkIdType ListedTetrahedra = 0;
 };
 
 #endif

@@ -99,6 +99,18 @@ void vtkTiledRayCastComputeShader::Dispatch(unsigned int groupsX, unsigned int g
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastComputeShader::DispatchIndirect(size_t offset)
+{
+  glDispatchComputeIndirect(static_cast<GLintptr>(offset));
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputeShader::DrawArraysIndirect(unsigned int mode, size_t offset)
+{
+  glDrawArraysIndirect(mode, reinterpret_cast<const void*>(offset));
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastComputeShader::ReleaseProgram()
 {
   if (this->Handle)

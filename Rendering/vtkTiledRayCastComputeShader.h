@@ -28,7 +28,8 @@
 
 #include "vtkShaderProgram.h"
 
-#include <string> // For std::string
+#include <cstddef> // For size_t
+#include <string>  // For std::string
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -68,6 +69,12 @@ public:
   void Dispatch(unsigned int groupsX, unsigned int groupsY);
 
   /**
+   * Run the workgroups that the bound indirect buffer holds at byte `offset`
+   * (vtkTiledRayCastStorageBuffer::BindIndirect).
+   */
+  void DispatchIndirect(size_t offset);
+
+  /**
    * Delete the GL program (the context must be current).
    */
   void ReleaseProgram();
@@ -84,6 +91,12 @@ public:
   static void UnbindImage(unsigned int unit);
   static void Barrier(unsigned int bits);
   ///@}
+
+  /**
+   * glDrawArraysIndirect: draw what the bound indirect buffer holds at byte `offset` (the
+   * current program's vertex array bound).
+   */
+  static void DrawArraysIndirect(unsigned int mode, size_t offset);
 
 protected:
   vtkTiledRayCastComputeShader();

@@ -45,6 +45,8 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfOcclusionQueries = 0;
   this->NumberOfRaysTerminatedEarly = 0;
   this->NumberOfEntries = 0;
+  this->NumberOfEntryRounds = 0;
+  this->NumberOfIncompleteRays = 0;
   this->NumberOfSteps = 0;
   this->MaximumStepsPerRay = 0;
   this->MeshBuildTime = 0;
@@ -92,7 +94,13 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
   if (compute)
   {
     text << " (" << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay
-         << "), " << this->NumberOfEntries << " entries, " << this->NumberOfLayers << " layers, "
+         << "), " << this->NumberOfEntries << " entries (" << this->NumberOfEntryRounds
+         << (this->NumberOfEntryRounds == 1 ? " round" : " rounds");
+    if (this->NumberOfIncompleteRays > 0)
+    {
+      text << ", " << this->NumberOfIncompleteRays << " rays incomplete";
+    }
+    text << "), " << this->NumberOfLayers << " layers, "
          << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped << " empty)";
   }
   else
@@ -137,6 +145,8 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfRaysTerminatedEarly: " << this->NumberOfRaysTerminatedEarly << "\n";
   os << indent << "Pipeline: " << (this->Pipeline ? this->Pipeline : "(none)") << "\n";
   os << indent << "NumberOfEntries: " << this->NumberOfEntries << "\n";
+  os << indent << "NumberOfEntryRounds: " << this->NumberOfEntryRounds << "\n";
+  os << indent << "NumberOfIncompleteRays: " << this->NumberOfIncompleteRays << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "MaximumStepsPerRay: " << this->MaximumStepsPerRay << "\n";
   os << indent << "FirstHitTime: " << this->FirstHitTime << "\n";

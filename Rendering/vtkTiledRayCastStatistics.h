@@ -118,13 +118,36 @@ public:
   ///@{
   /**
    * Compute pipeline: the boundary-face crossings listed per pixel (entries; one per ray and
-   * boundary layer in front of the opaque depth), and the tetrahedra the rays walked: in all,
-   * per ray on average and the most of any ray. In the compute pipeline these counts and the
+   * boundary layer in front of the opaque depth). In the compute pipeline this count, those
+   * below and the
    * numbers of rays, layers and early terminations come from the GPU: they are this frame's
    * when SynchronousStatistics is on, else those of the latest frame whose counts had arrived.
    */
   vtkSetMacro(NumberOfEntries, vtkIdType);
   vtkGetMacro(NumberOfEntries, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: the entry list is sized from earlier frames, and a view that asks for
+   * more is listed again in rounds on the GPU (the pixels that did not fit; at most
+   * three rounds in all). NumberOfEntryRounds is the rounds that ran (1 when the list held
+   * every entry); NumberOfIncompleteRays the rays of the last round whose list still had lost
+   * entries (they miss boundary layers: the mapper warns and the list grows for the next frame;
+   * 0 whenever the frame was verified: SynchronousStatistics, the first frame of a mesh or
+   * image size).
+   */
+  vtkSetMacro(NumberOfEntryRounds, int);
+  vtkGetMacro(NumberOfEntryRounds, int);
+  vtkSetMacro(NumberOfIncompleteRays, vtkIdType);
+  vtkGetMacro(NumberOfIncompleteRays, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: the tetrahedra the rays walked: in all, per ray on average and the most
+   * of any ray.
+   */
   vtkSetMacro(NumberOfSteps, vtkIdType);
   vtkGetMacro(NumberOfSteps, vtkIdType);
   vtkSetMacro(MaximumStepsPerRay, vtkIdType);
@@ -253,6 +276,8 @@ protected:
   vtkIdType NumberOfRaysTerminatedEarly = 0;
   char* Pipeline = nullptr;
   vtkIdType NumberOfEntries = 0;
+  int NumberOfEntryRounds = 0;
+  vtkIdType NumberOfIncompleteRays = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;
   double FirstHitTime = -1;

@@ -44,6 +44,20 @@ void vtkTiledRayCastStorageBuffer::BindBase(unsigned int index) const
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::BindIndirect() const
+{
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, this->Handle);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, this->Handle);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::UnbindIndirect()
+{
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastStorageBuffer::Write(size_t offset, size_t bytes, const void* data)
 {
   std::vector<unsigned char> zeros;

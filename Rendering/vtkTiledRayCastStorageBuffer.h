@@ -43,6 +43,14 @@ public:
    */
   void BindBase(unsigned int index) const;
 
+  ///@{
+  /**
+   * Bind as the buffer of indirect draws and dispatches (both targets), and unbind both.
+   */
+  void BindIndirect() const;
+  static void UnbindIndirect();
+  ///@}
+
   /**
    * Write `bytes` bytes at `offset` (zeros when data is null).
    */

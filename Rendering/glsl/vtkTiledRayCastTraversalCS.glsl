@@ -9,6 +9,11 @@
 // a key at or below its key: the rules of the fragment pipeline's peeling, so
 // both pipelines enter the same layers. The ray state lives in registers from
 // the first entry to the last step; the colour is written once.
+//
+// Rounds (vtkTiledRayCastEntryList.glsl): a pixel whose list lost entries is
+// left PENDING for the next round, unless this is the last round, which walks
+// what the list holds and counts the ray as incomplete. Later rounds skip the
+// pixels of earlier ones.
 //============================================================================
 //TRC::Common::Dec
 //TRC::Layout::Dec
@@ -23,6 +28,7 @@ uniform ivec2 in_imageSize;
 // The most steps one ray may take in one layer (more than any ray can need).
 uniform int in_maximumSteps;
 uniform float in_peelEpsilon;
+uniform bool in_lastRound;
 
 // What the frame did, for the mapper's statistics (read by the CPU one frame later, or at once
 // with SynchronousStatistics).
@@ -36,7 +42,10 @@ layout(std430, binding = 2) buffer trcRayCountBuffer
   uint trcStepsHigh;
   uint trcMaximumSteps;
   uint trcRaysStopped; // rays that reached in_maximumSteps in one layer
-  uint trcEmptyGroups; // workgroups (8x8 tiles) with no ray
+  uint trcEmptyGroups; // workgroups (8x4 tiles) with no ray, in the first round
+  uint trcEntriesAsked; // entries of the first round: all that the view has
+  uint trcEntryRounds;  // rounds beyond the first that ran (vtkTiledRayCastEntryRoundCS.glsl)
+  uint trcRaysIncomplete; // rays of the last round whose lists had lost entries
 };
 
 shared uint trcGroupRays;
@@ -46,6 +55,7 @@ shared uint trcGroupMaximumLayers;
 shared uint trcGroupSteps;
 shared uint trcGroupMaximumSteps;
 shared uint trcGroupStopped;
+shared uint trcGroupIncomplete;
 
 // The entry the ray takes next, or 0: the node (index + 1) first in depth order among those
 // allowed after an exit at exitLambda from a layer entered at (lastLambda, lastKey).
@@ -100,6 +110,7 @@ void main()
     trcGroupSteps = 0u;
     trcGroupMaximumSteps = 0u;
     trcGroupStopped = 0u;
+    trcGroupIncomplete = 0u;
   }
   barrier();
 
@@ -111,10 +122,15 @@ void main()
   ivec2 block = ivec2((lane >> 3u) & 1u, lane >> 4u);
   ivec2 pixel = ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
   bool inImage = all(lessThan(pixel, in_imageSize));
-  uint head = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
-  if (head != 0u)
+  uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
+  // A pixel of this round: any in the first, the pending ones after.
+  bool inRound = inImage && (in_entryRound == 1 || (word & TRC_ENTRY_PENDING) != 0u);
+  bool lost = (word & TRC_ENTRY_LOST) != 0u;
+  bool deferred = inRound && lost && !in_lastRound;
+  uint head = inRound && !deferred ? word & TRC_ENTRY_NODE : 0u;
+  if (inRound && word != 0u)
   {
-    imageStore(in_entryHeads, pixel, uvec4(0u));
+    imageStore(in_entryHeads, pixel, uvec4(deferred ? TRC_ENTRY_PENDING : 0u));
   }
   vec4 color = vec4(0.0);
   int steps = 0;
@@ -167,14 +183,18 @@ void main()
     {
       atomicAdd(trcGroupStopped, 1u);
     }
+    if (lost)
+    {
+      atomicAdd(trcGroupIncomplete, 1u);
+    }
   }
-  if (inImage)
+  if (inRound && !deferred)
   {
     imageStore(in_colorImage, pixel, color);
   }
 
   barrier();
-  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u)
+  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u && in_entryRound == 1)
   {
     atomicAdd(trcEmptyGroups, 1u);
   }
@@ -186,6 +206,7 @@ void main()
     atomicMax(trcMaximumLayers, trcGroupMaximumLayers);
     atomicMax(trcMaximumSteps, trcGroupMaximumSteps);
     atomicAdd(trcRaysStopped, trcGroupStopped);
+    atomicAdd(trcRaysIncomplete, trcGroupIncomplete);
     // A 64-bit sum from two words: GLSL 4.30 has no 64-bit atomics.
     uint before = atomicAdd(trcStepsLow, trcGroupSteps);
     if (before + trcGroupSteps < before)
