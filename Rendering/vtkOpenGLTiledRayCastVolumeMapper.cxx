@@ -527,6 +527,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.MaximumSteps = this->GetMaximumSteps();
   frame.PeelEpsilon = PeelEpsilon;
   frame.Verify = this->Self->SynchronousStatistics;
+  std::copy(this->Geometry.NearPlane, this->Geometry.NearPlane + 3, frame.ViewDirection);
+  frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
 
@@ -638,6 +640,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
       ? vtkTetMeshBuilder::Magnitude
       : vtkTetMeshBuilder::Component);
   builder->SetVectorComponent(self->GetVectorComponent());
+  builder->SetSpatialOrdering(self->GetSpatialOrdering());
 
   // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
   vtkNew<vtkTimerLog> timer;

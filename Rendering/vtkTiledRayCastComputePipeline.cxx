@@ -329,11 +329,21 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   // A frame is verified (its counts read before Render() returns, the list grown and the
   // frame drawn again if the rounds did not suffice) when asked, and when nothing is known
   // yet of what this mesh asks for at this image size.
-  this->Verifying = frame.Verify || !this->Verified ||
+  // A camera jump too: the bounds cover a quarter more of the view than in the last frame, or
+  // the view turned by more than 30 degrees (more boundary layers may face it). Frames of a
+  // camera that moves (interaction, animation) are not verified: their entry counts change
+  // by little from one frame to the next, which the list's headroom and the rounds absorb.
+  const float* d = frame.ViewDirection;
+  const float turn = d[0] * this->LastDirection[0] + d[1] * this->LastDirection[1] +
+    d[2] * this->LastDirection[2];
+  const bool jump = turn < 0.866f || frame.BoundsCoverage > 1.25 * this->LastCoverage + 1e-3;
+  this->Verifying = frame.Verify || !this->Verified || jump ||
     frame.NumberOfBoundaryFaces != this->ListedFaces ||
     frame.NumberOfTetrahedra != this->ListedTetrahedra;
   this->ListedFaces = frame.NumberOfBoundaryFaces;
   this->ListedTetrahedra = frame.NumberOfTetrahedra;
+  std::copy(d, d + 3, this->LastDirection);
+  this->LastCoverage = frame.BoundsCoverage;
   // A quarter to spare over what the latest view counted asked for (GrowEntries adds another),
   // and room for its mean entries per ray at every pixel, up to two (24 B a pixel): a camera
   // that comes closer then needs no second round for meshes of one or two boundary layers.

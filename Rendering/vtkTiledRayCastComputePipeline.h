@@ -119,6 +119,10 @@ public:
     bool Mirrored = false;
     int MaximumSteps = 0;
     bool Verify = false; // wait for this frame's counts (SynchronousStatistics)
+    // The view (vtkTiledRayCastFrameGeometry): direction in object coordinates, and the
+    // fraction of the viewport the mesh's bounds cover.
+    float ViewDirection[3] = { 0, 0, 1 };
+    double BoundsCoverage = 0;
     float PeelEpsilon = 0;
     float ViewportOrigin[2] = { 0, 0 };
   };
@@ -241,6 +245,8 @@ private:
   bool Verifying = false;
   vtkIdType ListedFaces = 0;
   vtkIdType ListedTetrahedra = 0;
+  float LastDirection[3] = { 0, 0, 0 };
+  double LastCoverage = 0;
 };
 
 #endif

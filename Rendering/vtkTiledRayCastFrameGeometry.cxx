@@ -157,6 +157,40 @@ bool vtkTiledRayCastFrameGeometry::Compute(
     above = above || d > 0;
   }
   this->NearPlaneCutsMesh = below && above;
+  this->BoundsCoverage = this->ComputeBoundsCoverage(meshBounds);
   this->Valid = std::isfinite(this->RayDir[0][0]) && std::isfinite(this->RayOrigin[0][0]);
   return this->Valid;
+}
+
+//------------------------------------------------------------------------------
+double vtkTiledRayCastFrameGeometry::ComputeBoundsCoverage(const double meshBounds[6]) const
+{
+  double lo[2] = { 1, 1 };
+  double hi[2] = { -1, -1 };
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[3] = { meshBounds[c & 1], meshBounds[2 + ((c >> 1) & 1)],
+      meshBounds[4 + ((c >> 2) & 1)] };
+    double clip[4];
+    for (int row = 0; row < 4; ++row)
+    {
+      const float* m = this->ObjectToClip;
+      clip[row] = m[row] * p[0] + m[4 + row] * p[1] + m[8 + row] * p[2] + m[12 + row];
+    }
+    if (!(clip[3] > 0))
+    {
+      return 1.0; // a corner behind the eye: the bounds may cover the whole view
+    }
+    for (int a = 0; a < 2; ++a)
+    {
+      lo[a] = std::min(lo[a], clip[a] / clip[3]);
+      hi[a] = std::max(hi[a], clip[a] / clip[3]);
+    }
+  }
+  double area = 1;
+  for (int a = 0; a < 2; ++a)
+  {
+    area *= std::max(0.0, std::min(hi[a], 1.0) - std::max(lo[a], -1.0)) / 2.0;
+  }
+  return area;
 }

@@ -52,8 +52,15 @@ public:
   float ObjectToClip[16] = {};    // column-major, shifted object coordinates to clip
   float NearPlane[4] = {};        // n.x + d, positive beyond the near plane
   bool NearPlaneCutsMesh = false; // the camera may be inside the mesh
+  // The fraction of the viewport that the mesh's bounds cover on screen (1 when they reach
+  // behind the eye), and the view direction in object coordinates (NearPlane's normal): what
+  // tells a camera jump from a camera move.
+  double BoundsCoverage = 0;
   bool Mirrored = false;          // the volume's matrix reverses orientation
   bool Valid = false;
+
+private:
+  double ComputeBoundsCoverage(const double meshBounds[6]) const;
 };
 
 #endif

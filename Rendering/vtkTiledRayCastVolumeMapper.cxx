@@ -77,6 +77,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
   os << indent << "MeshLayout: " << this->GetMeshLayoutAsString() << "\n";
+  os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
   os << indent << "Pipeline: " << this->GetPipelineAsString() << "\n";
   os << indent << "TetsPerPass: " << this->TetsPerPass << "\n";
   os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";
