@@ -1568,7 +1568,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
   this->SetMeshUniforms(this->FirstHitProgram.Shader);
   this->SetCoverageUniforms(this->FirstHitProgram.Shader);
   this->FirstHitProgram.VAO->Bind();
+  // Faces are not clipped at the near plane: their fragment shader decides there.
+  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
   return true;
 }
@@ -1601,7 +1604,9 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   p->SetUniformf("in_peelEpsilon", PeelEpsilon);
   this->PeelProgram.VAO->Bind();
   const unsigned int query = this->Queries.Begin();
+  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   this->Queries.End();
   // Whether another layer exists decides what to draw next: this read waits for the GPU, once
   // per layer (as VTK's dual depth peeling does).

@@ -414,6 +414,7 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
   p->SetUniformi("in_entryCapacity", capacity);
   p->SetUniformi("in_entryRound", round);
   this->FacesProgram.VAO->Bind();
+  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   if (round == 1)
   {
     glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
@@ -423,6 +424,7 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
     vtkTiledRayCastComputeShader::DrawArraysIndirect(GL_TRIANGLES, FaceDrawOffset);
     vtkTiledRayCastStorageBuffer::UnbindIndirect();
   }
+  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   state->PopDrawFramebufferBinding();

@@ -111,6 +111,17 @@ void vtkTiledRayCastComputeShader::DrawArraysIndirect(unsigned int mode, size_t 
 }
 
 //------------------------------------------------------------------------------
+bool vtkTiledRayCastComputeShader::SetDepthClamp(bool on)
+{
+  const bool was = glIsEnabled(GL_DEPTH_CLAMP) == GL_TRUE;
+  if (on != was)
+  {
+    on ? glEnable(GL_DEPTH_CLAMP) : glDisable(GL_DEPTH_CLAMP);
+  }
+  return was;
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastComputeShader::ReleaseProgram()
 {
   if (this->Handle)

@@ -98,6 +98,13 @@ public:
    */
   static void DrawArraysIndirect(unsigned int mode, size_t offset);
 
+  /**
+   * Turn GL_DEPTH_CLAMP on or off (vtkOpenGLState does not track it), returning whether it was
+   * on. The passes over the boundary faces draw with it, so that no face is clipped at the
+   * near plane: their fragment shader decides there (vtkTiledRayCastBoundaryFaceFS.glsl).
+   */
+  static bool SetDepthClamp(bool on);
+
 protected:
   vtkTiledRayCastComputeShader();
   ~vtkTiledRayCastComputeShader() override;

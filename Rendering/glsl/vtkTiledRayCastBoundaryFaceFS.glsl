@@ -57,11 +57,6 @@ layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {
-  //TRC::Peel::Early
-  if (ip_testCoverage != 0 && !trcCovers(gl_FragCoord.xy))
-  {
-    discard;
-  }
   TrcRay ray = trcPixelRay(gl_FragCoord.xy);
   vec3 a;
   vec3 normal;
@@ -80,6 +75,25 @@ void main()
     {
       lambda = exact;
     }
+  }
+  // How much lambda changes from one pixel to the next: taken before any fragment of the quad
+  // is discarded (derivatives need them all).
+  float lambdaPerPixel = fwidth(lambda);
+  //TRC::Peel::Early
+  if (ip_testCoverage != 0 && !trcCovers(gl_FragCoord.xy))
+  {
+    discard;
+  }
+  // The pass draws with depth clamping: nothing is clipped at the near plane, and this test
+  // takes its place. Crossed behind the near plane, the face leaves the ray to the near-plane
+  // slices (it starts inside the mesh there), except within half a pixel of the line where
+  // the face meets the plane: faces and slices overlap there, where the clipper and the
+  // slices' own corners would round differently and leave a seam of lost rays. (An entry kept
+  // in that band starts the ray at the near plane in this tet; a slice's entry, if the pixel
+  // has one too, comes first.)
+  if (lambda < in_lambdaNear - 0.5 * lambdaPerPixel)
+  {
+    discard;
   }
   lambda = max(lambda, in_lambdaNear);
   if (lambda >= ray.lambdaMax)
