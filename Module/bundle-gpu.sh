@@ -107,7 +107,7 @@ closure() {
 
 elf_files() {
   find "$@" -type f 2>/dev/null | while read -r f; do
-    if head -c 4 "$f" 2>/dev/null | grep -q 'ELF'; then echo "$f"; fi
+    if head -c 4 "$f" 2>/dev/null | grep 'ELF' > /dev/null; then echo "$f"; fi
   done
 }
 
@@ -131,7 +131,7 @@ fi
 
 # --- 3. ctest -----------------------------------------------------------------------------------
 ctest_exe="$(command -v ctest)" || die "ctest not found"
-cmake_root="/usr/share/cmake-$(ctest --version | head -n 1 | grep -oE '[0-9]+\.[0-9]+' | head -n 1)"
+cmake_root="/usr/share/cmake-$(ctest --version | sed -n 1p | grep -oE "[0-9]+\.[0-9]+" | sed -n 1p)"
 [ -f "$cmake_root/Modules/CMake.cmake" ] || die "cannot find CMake's modules ($cmake_root)"
 cp -L "$ctest_exe" "$root/bin/ctest"
 # ctest only checks that <prefix>/share/cmake-3.x/Modules/CMake.cmake exists next to itself.
