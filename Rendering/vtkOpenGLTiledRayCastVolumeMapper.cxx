@@ -40,6 +40,7 @@
 #include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
 #include "vtkTetMeshValidationReport.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
@@ -392,7 +393,7 @@ public:
 
   void ReportError(const std::string& message);
   bool CheckContext(vtkOpenGLRenderWindow* window);
-  bool UpdateMesh(vtkDataSet* input);
+  bool UpdateMesh(vtkDataSet* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
@@ -619,7 +620,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* input)
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
+  vtkDataSet* input, vtkVolumeProperty* property)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   vtkTetMeshBuilder* builder = this->Builder;
@@ -627,10 +629,23 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
   builder->SetArrayAccessMode(self->GetArrayAccessMode());
   builder->SetArrayId(self->ArrayId);
   builder->SetArrayName(self->ArrayName);
-  builder->SetVectorMode(self->GetVectorMode() == vtkTiledRayCastVolumeMapper::MAGNITUDE
-      ? vtkTetMeshBuilder::Magnitude
-      : vtkTetMeshBuilder::Component);
-  builder->SetVectorComponent(self->GetVectorComponent());
+  // The one scalar the property takes from the array (vtkTetScalarSelection's rule, which the
+  // reference renderer follows too); a missing array is the builder's error.
+  int cellFlag = -1;
+  vtkDataArray* array = vtkAbstractMapper::GetScalars(input, self->GetScalarMode(),
+    self->GetArrayAccessMode(), self->ArrayId, self->ArrayName, cellFlag);
+  vtkNew<vtkTetScalarSelection> selection;
+  selection->SetVectorMode(self->GetVectorMode());
+  selection->SetVectorComponent(self->GetVectorComponent());
+  if (array && !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), property))
+  {
+    this->ReportError(
+      std::string("Not rendered: ") + selection->GetErrorMessage() + ". Nothing is drawn.");
+    return false;
+  }
+  builder->SetVectorMode(
+    selection->GetMagnitude() ? vtkTetMeshBuilder::Magnitude : vtkTetMeshBuilder::Component);
+  builder->SetVectorComponent(selection->GetComponent());
 
   // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
   vtkNew<vtkTimerLog> timer;
@@ -2067,7 +2082,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // CPU work: only what changed.
-  if (!impl->UpdateMesh(input))
+  if (!impl->UpdateMesh(input, property))
   {
     return;
   }

@@ -32,6 +32,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
 #include "vtkTetMeshValidationReport.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -148,40 +149,6 @@ struct CopyPointsWorker
         for (vtkIdType i = 3 * begin; i < 3 * end; ++i)
         {
           out[i] = static_cast<double>(values[i]);
-        }
-      });
-  }
-};
-
-//------------------------------------------------------------------------------
-// One value per tuple out of any numeric array: one component, or the magnitude.
-struct ExtractScalarsWorker
-{
-  template <typename ArrayT>
-  void operator()(ArrayT* array, double* out, int component, bool magnitude) const
-  {
-    const auto tuples = vtk::DataArrayTupleRange(array);
-    const int numComponents = array->GetNumberOfComponents();
-    vtkSMPTools::For(0, array->GetNumberOfTuples(), 8192,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const auto tuple = tuples[i];
-          if (magnitude)
-          {
-            double sum = 0.0;
-            for (int c = 0; c < numComponents; ++c)
-            {
-              const double v = static_cast<double>(tuple[c]);
-              sum += v * v;
-            }
-            out[i] = std::sqrt(sum);
-          }
-          else
-          {
-            out[i] = static_cast<double>(tuple[component]);
-          }
         }
       });
   }
@@ -1653,11 +1620,7 @@ bool vtkTetMeshBuilder::vtkInternals::ReadScalars(
 
   std::vector<double>& values = cellFlag == 0 ? mesh->PointScalars : this->InputCellScalars;
   values.resize(static_cast<size_t>(expected));
-  ExtractScalarsWorker worker;
-  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, values.data(), component, magnitude))
-  {
-    worker(array, values.data(), component, magnitude);
-  }
+  vtkTetScalarSelection::Extract(array, magnitude, component, values.data());
 
   double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   vtkIdType nonFinite = 0;

@@ -36,8 +36,8 @@
  * Inputs are those of a volume mapper: a vtkDataSet (unstructured grids of tetrahedra are used
  * as they are; other 3D cells are split with vtkDataSetTriangleFilter; cells of lower dimension
  * are ignored), scalars chosen as VTK's mappers choose them (vtkAbstractMapper::GetScalars),
- * reduced to one component (VectorMode: a component, or the magnitude), a volume property
- * (first component), a camera, the image size (aspect ratio = width / height), the volume's
+ * reduced to one scalar by the mapper's rule (vtkTetScalarSelection: the colour function's
+ * VectorMode by default), a volume property (first component), a camera, the image size (aspect ratio = width / height), the volume's
  * matrix (lengths are measured in world coordinates, after it) and an optional opaque depth
  * buffer (window z in [0, 1] per pixel, 1 meaning no geometry).
  *
@@ -107,11 +107,15 @@ public:
 
   ///@{
   /**
-   * How a multi-component array becomes one scalar: vtkScalarsToColors::COMPONENT (the
-   * default; component VectorComponent) or vtkScalarsToColors::MAGNITUDE.
+   * How a multi-component array becomes one scalar, by the mapper's rule
+   * (vtkTetScalarSelection): vtkTetScalarSelection::DEFAULT (-1, the default) follows the
+   * colour transfer function's own VectorMode and VectorComponent as VTK's unstructured mappers
+   * do; vtkScalarsToColors::COMPONENT (component VectorComponent) or MAGNITUDE override it.
+   * Components the property would blend or read as dependent are refused with an error.
    */
   vtkSetMacro(VectorMode, int);
   vtkGetMacro(VectorMode, int);
+  void SetVectorModeToDefault();
   void SetVectorModeToComponent();
   void SetVectorModeToMagnitude();
   vtkSetMacro(VectorComponent, int);

@@ -85,7 +85,9 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
-  os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
+  os << indent << "VectorMode: "
+     << (this->VectorMode == DEFAULT ? "Default"
+                                     : (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component"))
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";

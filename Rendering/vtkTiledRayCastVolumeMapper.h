@@ -33,7 +33,7 @@
  * The optical model is that of vtkUnstructuredGridPartialPreIntegration: the opacity transfer
  * function divided by the scalar opacity unit distance is an attenuation coefficient per world
  * unit, the colour is emitted in proportion to it; see docs/design.md. Only the first component
- * of the volume property is used.
+ * of the volume property is used, on one scalar per point or cell (see VectorMode).
  *
  * After each render, GetStatistics() tells what was done (pipeline, rays, tetrahedra per ray,
  * layers, tiles skipped, rays terminated early, GPU time per phase, GPU memory held) and
@@ -235,17 +235,25 @@ public:
 
   ///@{
   /**
-   * How a scalar array of several components is reduced to the one scalar that is rendered:
-   * one component (VectorComponent) or the magnitude, as in vtkScalarsToColors. Defaults:
-   * COMPONENT, component 0.
+   * How a scalar array of several components is reduced to the one scalar that is rendered
+   * (vtkTetScalarSelection has the rule; the exact reference renderer follows the same).
+   * DEFAULT (the default) is VTK 9.1's rule for unstructured grids (vtkProjectedTetrahedraMapper):
+   * the colour transfer function's own vtkScalarsToColors::VectorMode and VectorComponent
+   * (`property->GetRGBTransferFunction()->SetVectorComponent(1)`), component 0 with a gray
+   * function. MAGNITUDE or COMPONENT (with VectorComponent) set here override the colour
+   * function. Several components are never blended: dependent components
+   * (IndependentComponentsOff with more than one component) and transfer functions set for
+   * components other than the first are refused with an error, and nothing is drawn.
    */
   enum VectorModes
   {
+    DEFAULT = -1,
     MAGNITUDE = 0,
     COMPONENT = 1
   };
-  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
+  vtkSetClampMacro(VectorMode, int, DEFAULT, COMPONENT);
   vtkGetMacro(VectorMode, int);
+  void SetVectorModeToDefault() { this->SetVectorMode(DEFAULT); }
   void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
   void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
   vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
@@ -310,7 +318,7 @@ protected:
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumNumberOfPassesPerLayer = 1000000;
-  int VectorMode = COMPONENT;
+  int VectorMode = DEFAULT;
   int VectorComponent = 0;
   vtkIdType MaximumTextureBufferSize = 0;
   int MaximumTextureSize = 0;
