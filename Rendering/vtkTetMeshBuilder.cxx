@@ -31,6 +31,7 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
+#include "vtkTetMeshOverlapRule.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
@@ -42,6 +43,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -371,6 +373,7 @@ public:
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfOverlappingTetrahedra = 0;
   vtkIdType NumberOfCrackFaces = 0;
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfNonFiniteScalars = 0;
@@ -449,6 +452,7 @@ public:
     report->SetNumberOfInvertedTetrahedra(this->NumberOfInvertedTetrahedra);
     report->SetNumberOfDegenerateTetrahedra(this->NumberOfDegenerateTetrahedra);
     report->SetNumberOfNonManifoldFaces(this->NumberOfNonManifoldFaces);
+    report->SetNumberOfOverlappingTetrahedra(this->NumberOfOverlappingTetrahedra);
     report->SetNumberOfCrackFaces(this->NumberOfCrackFaces);
     report->SetNumberOfDuplicatePoints(this->NumberOfDuplicatePoints);
     report->SetNumberOfNonFiniteScalars(this->NumberOfNonFiniteScalars);
@@ -1072,11 +1076,22 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
     });
 
   std::atomic<vtkIdType> nonManifold(0);
+  // Two non-degenerate tetrahedra on one side of a face overlap (vtkTetMeshOverlapRule).
+  const uint8_t* flags = mesh->TetFlags.data();
+  const uint32_t* inputCells = mesh->TetInputCellIds.data();
+  auto overlap = [tp, flags](uint32_t a, uint32_t b)
+  {
+    return !(flags[a >> 2] & vtkTetMesh::Degenerate) && !(flags[b >> 2] & vtkTetMesh::Degenerate) &&
+      FaceParity(tp, a) == FaceParity(tp, b);
+  };
+  std::vector<uint32_t> leftOut;
+  std::mutex leftOutMutex;
   vtkSMPTools::For(0, static_cast<vtkIdType>(numPoints), 2048,
     [&](vtkIdType vb, vtkIdType ve)
     {
       vtkIdType localNonManifold = 0;
-      std::vector<uint32_t> even, odd;
+      std::vector<vtkTetMeshOverlapRule::Entry> rule;
+      std::vector<uint32_t> localLeftOut;
       // A small open-addressing table per bucket: slot -> 1 + index of the first face seen
       // with that key, the top bit set once it is paired. Linear in the bucket's size, where a
       // sort is not, and buckets of meshes numbered at random hold dozens of faces.
@@ -1118,7 +1133,8 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             const FaceEntry& o = first[(slot & ~Paired) - 1];
             if (SameFace(o, e))
             {
-              if (slot & Paired)
+              // A third tetrahedron, or two on one side (they overlap): the slow path below.
+              if ((slot & Paired) || overlap(o.Face, e.Face))
               {
                 thirdFace = true;
               }
@@ -1137,7 +1153,8 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
         {
           continue;
         }
-        // A face shared by more than two tetrahedra (rare): start the bucket over, sorted.
+        // A face shared by more than two tetrahedra or by two on one side (rare): start the
+        // bucket over, sorted, and follow vtkTetMeshOverlapRule.
         for (FaceEntry* e = first; e < last; ++e)
         {
           neighbors[e->Face] = NoNeighbor;
@@ -1151,35 +1168,42 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             ++runEnd;
           }
           const ptrdiff_t m = runEnd - run;
-          if (m == 2)
+          if (m == 2 && !overlap(run[0].Face, run[1].Face))
           {
             neighbors[run[0].Face] = run[1].Face;
             neighbors[run[1].Face] = run[0].Face;
           }
-          else if (m > 2)
+          else if (m >= 2)
           {
-            // Only tetrahedra on opposite sides can be neighbours (a ray leaving one enters
-            // the other): pair them in order, leave the rest as boundary faces.
-            ++localNonManifold;
-            even.clear();
-            odd.clear();
+            localNonManifold += m > 2 ? 1 : 0;
+            rule.clear();
             for (FaceEntry* e = run; e < runEnd; ++e)
             {
-              (FaceParity(tp, e->Face) ? even : odd).push_back(e->Face);
+              const uint32_t t = e->Face >> 2;
+              rule.push_back({ e->Face, FaceParity(tp, e->Face),
+                (flags[t] & vtkTetMesh::Degenerate) != 0, inputCells[t] });
             }
-            const size_t pairs = std::min(even.size(), odd.size());
-            for (size_t k = 0; k < pairs; ++k)
+            uint32_t link[2];
+            vtkTetMeshOverlapRule::Resolve(rule.data(), rule.size(), link, localLeftOut);
+            if (link[0] != NoNeighbor)
             {
-              neighbors[even[k]] = odd[k];
-              neighbors[odd[k]] = even[k];
+              neighbors[link[0]] = link[1];
+              neighbors[link[1]] = link[0];
             }
           }
           run = runEnd;
         }
       }
       nonManifold += localNonManifold;
+      if (!localLeftOut.empty())
+      {
+        std::lock_guard<std::mutex> lock(leftOutMutex);
+        leftOut.insert(leftOut.end(), localLeftOut.begin(), localLeftOut.end());
+      }
     });
   this->NumberOfNonManifoldFaces = nonManifold;
+  this->NumberOfOverlappingTetrahedra = vtkTetMeshOverlapRule::Apply(
+    leftOut, neighbors, mesh->TetFlags.data(), static_cast<uint8_t>(vtkTetMesh::Overlapping));
 }
 
 //------------------------------------------------------------------------------
@@ -1266,6 +1290,10 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
   vtkTetMesh* mesh = this->Mesh;
   const vtkIdType numFaces = 4 * mesh->GetNumberOfTetrahedra();
   const uint32_t* neighbors = mesh->TetNeighbors.data();
+  const uint8_t* flags = mesh->TetFlags.data();
+  // Faces of tetrahedra left out (vtkTetMeshOverlapRule) are no boundary: they are never entered.
+  auto boundary = [neighbors, flags](vtkIdType f)
+  { return neighbors[f] == NoNeighbor && !(flags[f >> 2] & vtkTetMesh::Overlapping); };
   const int blocks = NumberOfBlocks(numFaces);
   std::vector<size_t> counts(static_cast<size_t>(blocks) + 1, 0);
   ForBlocks(numFaces, blocks,
@@ -1274,7 +1302,7 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
       size_t n = 0;
       for (vtkIdType f = begin; f < end; ++f)
       {
-        n += neighbors[f] == NoNeighbor ? 1 : 0;
+        n += boundary(f) ? 1 : 0;
       }
       counts[b + 1] = n;
     });
@@ -1287,7 +1315,7 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
       size_t pos = counts[b];
       for (vtkIdType f = begin; f < end; ++f)
       {
-        if (neighbors[f] == NoNeighbor)
+        if (boundary(f))
         {
           out[pos++] = static_cast<uint32_t>(f);
         }
@@ -1835,6 +1863,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     in.NumberOfSplitCells = in.NumberOfIgnoredCells = in.NumberOfInvalidCells = 0;
     in.NumberOfInvertedTetrahedra = in.NumberOfDegenerateTetrahedra = 0;
     in.NumberOfNonManifoldFaces = in.NumberOfCrackFaces = in.NumberOfDuplicatePoints = 0;
+    in.NumberOfOverlappingTetrahedra = 0;
     in.NumberOfNonFiniteScalars = 0;
     in.DegenerateCellIds.clear();
     in.TopologyError.clear();

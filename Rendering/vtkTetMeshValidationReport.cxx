@@ -39,6 +39,7 @@ void vtkTetMeshValidationReport::Reset()
   this->NumberOfInvertedTetrahedra = 0;
   this->NumberOfDegenerateTetrahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfOverlappingTetrahedra = 0;
   this->NumberOfCrackFaces = 0;
   this->NumberOfDuplicatePoints = 0;
   this->NumberOfNonFiniteScalars = 0;
@@ -67,6 +68,7 @@ bool vtkTetMeshValidationReport::HasDefects() const
   return this->NumberOfSplitCells > 0 || this->NumberOfIgnoredCells > 0 ||
     this->NumberOfInvalidCells > 0 || this->NumberOfInvertedTetrahedra > 0 ||
     this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfOverlappingTetrahedra > 0 ||
     this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
     this->NumberOfNonFiniteScalars > 0;
 }
@@ -76,6 +78,7 @@ bool vtkTetMeshValidationReport::HasProblems() const
 {
   return this->NumberOfIgnoredCells > 0 || this->NumberOfInvalidCells > 0 ||
     this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfOverlappingTetrahedra > 0 ||
     this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
     this->NumberOfNonFiniteScalars > 0;
 }
@@ -103,6 +106,8 @@ std::string vtkTetMeshValidationReport::GetSummary() const
     { this->NumberOfInvertedTetrahedra, "inverted tetrahedra reoriented" },
     { this->NumberOfDegenerateTetrahedra, "degenerate (zero-volume) tetrahedra" },
     { this->NumberOfNonManifoldFaces, "non-manifold faces (shared by more than two cells)" },
+    { this->NumberOfOverlappingTetrahedra,
+      "overlapping tetrahedra left out (on the same side of a shared face as an earlier one)" },
     { this->NumberOfCrackFaces, "crack faces (coincident but not shared)" },
     { this->NumberOfDuplicatePoints, "duplicate points" },
     { this->NumberOfNonFiniteScalars, "NaN or infinite scalars (made transparent)" },
@@ -135,6 +140,7 @@ void vtkTetMeshValidationReport::DeepCopy(vtkTetMeshValidationReport* other)
   this->NumberOfInvertedTetrahedra = other->NumberOfInvertedTetrahedra;
   this->NumberOfDegenerateTetrahedra = other->NumberOfDegenerateTetrahedra;
   this->NumberOfNonManifoldFaces = other->NumberOfNonManifoldFaces;
+  this->NumberOfOverlappingTetrahedra = other->NumberOfOverlappingTetrahedra;
   this->NumberOfCrackFaces = other->NumberOfCrackFaces;
   this->NumberOfDuplicatePoints = other->NumberOfDuplicatePoints;
   this->NumberOfNonFiniteScalars = other->NumberOfNonFiniteScalars;
@@ -162,6 +168,8 @@ void vtkTetMeshValidationReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfOverlappingTetrahedra: " << this->NumberOfOverlappingTetrahedra
+     << "\n";
   os << indent << "NumberOfCrackFaces: " << this->NumberOfCrackFaces << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfNonFiniteScalars: " << this->NumberOfNonFiniteScalars << "\n";

@@ -30,6 +30,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetExactArithmetic.h"
+#include "vtkTetReferenceOverlaps.h"
 #include "vtkTetRayIntegrator.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
@@ -389,6 +390,7 @@ public:
   std::vector<unsigned char> Transparent;
   std::vector<BVHNode> Nodes;
   double Center[3] = { 0.0, 0.0, 0.0 };
+  size_t NumberOfOverlapping = 0; // tetrahedra left out (vtkTetReferenceOverlaps)
 
   // The property the integrator was initialised with.
   vtkVolumeProperty* Property = nullptr;
@@ -624,6 +626,24 @@ bool vtkTetReferenceRenderer::vtkInternals::Prepare(vtkTetReferenceRenderer* sel
     }
     boxes.insert(boxes.end(), box, box + 6);
   }
+  // Tetrahedra on the same side of a face they share overlap: all but the first of each side in
+  // input order are left out, as the mesh builder does (vtkTetReferenceOverlaps).
+  const std::vector<unsigned char> overlapping = vtkTetReferenceOverlaps::Find(tets);
+  this->NumberOfOverlapping = 0;
+  for (size_t t = 0, kept = 0; t < overlapping.size(); ++t)
+  {
+    if (overlapping[t])
+    {
+      ++this->NumberOfOverlapping;
+      continue;
+    }
+    std::copy(tets.begin() + 4 * t, tets.begin() + 4 * t + 4, tets.begin() + 4 * kept);
+    std::copy(boxes.begin() + 6 * t, boxes.begin() + 6 * t + 6, boxes.begin() + 6 * kept);
+    keptCell[kept++] = keptCell[t];
+  }
+  keptCell.resize(keptCell.size() - this->NumberOfOverlapping);
+  tets.resize(4 * keptCell.size());
+  boxes.resize(6 * keptCell.size());
   const size_t numTets = keptCell.size();
   if (numTets == 0)
   {
@@ -1100,6 +1120,7 @@ int vtkTetReferenceRenderer::Render()
     this->LastPreparationTime = timer->GetElapsedTime();
     this->NumberOfTetrahedra = static_cast<vtkIdType>(in.Transparent.size());
     this->NumberOfDegenerateTetrahedra = degenerate;
+    this->NumberOfOverlappingTetrahedra = static_cast<vtkIdType>(in.NumberOfOverlapping);
   }
 
   if (in.Property != property || in.PropertyMTime != property->GetMTime() ||

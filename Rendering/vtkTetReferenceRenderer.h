@@ -32,6 +32,9 @@
  * and integrated exactly (vtkTetRayIntegrator), then composited front to back in exact optical
  * depth. This handles non-convex meshes, cavities, cracks, overlapping cells (composited in
  * order of entry), a camera inside the mesh and degenerate cells (zero volume: skipped).
+ * Tetrahedra that overlap through a shared face (on the same side of it: a face of three
+ * tetrahedra, a cell listed twice) follow the mesh builder's rule, written again here: all but
+ * the first in input order on each side of the face are left out.
  *
  * Inputs are those of a volume mapper: a vtkDataSet (unstructured grids of tetrahedra are used
  * as they are; other 3D cells are split with vtkDataSetTriangleFilter; cells of lower dimension
@@ -206,11 +209,14 @@ public:
 
   ///@{
   /**
-   * Figures of the last Render(): tetrahedra rendered, zero-volume tetrahedra skipped, seconds
-   * spent preparing the mesh (0 when cached) and casting rays.
+   * Figures of the last Render(): tetrahedra rendered, zero-volume tetrahedra skipped,
+   * overlapping tetrahedra left out (on the same side of a shared face as an earlier one: the
+   * mesh builder's rule, docs/mesh-layout.md), seconds spent preparing the mesh (0 when cached)
+   * and casting rays.
    */
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfOverlappingTetrahedra, vtkIdType);
   vtkGetMacro(LastPreparationTime, double);
   vtkGetMacro(LastRayCastTime, double);
   ///@}
@@ -273,6 +279,7 @@ protected:
 
   vtkIdType NumberOfTetrahedra;
   vtkIdType NumberOfDegenerateTetrahedra;
+  vtkIdType NumberOfOverlappingTetrahedra = 0;
   double LastPreparationTime;
   double LastRayCastTime;
 
