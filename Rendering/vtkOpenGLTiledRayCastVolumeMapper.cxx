@@ -45,6 +45,7 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
+#include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -300,6 +301,7 @@ public:
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
   vtkNew<vtkTetMeshBuilder> Builder;
+  vtkTiledRayCastMeshInput Input;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
   int LayoutKind = -1;
   int LayoutTextureLimit = 0;
@@ -393,7 +395,7 @@ public:
 
   void ReportError(const std::string& message);
   bool CheckContext(vtkOpenGLRenderWindow* window);
-  bool UpdateMesh(vtkDataSet* input, vtkVolumeProperty* property);
+  bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
@@ -621,37 +623,29 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
-  vtkDataSet* input, vtkVolumeProperty* property)
+  vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   vtkTetMeshBuilder* builder = this->Builder;
-  builder->SetScalarMode(self->GetScalarMode());
-  builder->SetArrayAccessMode(self->GetArrayAccessMode());
-  builder->SetArrayId(self->ArrayId);
-  builder->SetArrayName(self->ArrayName);
-  // The one scalar the property takes from the array (vtkTetScalarSelection's rule, which the
-  // reference renderer follows too); a missing array is the builder's error.
-  int cellFlag = -1;
-  vtkDataArray* array = vtkAbstractMapper::GetScalars(input, self->GetScalarMode(),
-    self->GetArrayAccessMode(), self->ArrayId, self->ArrayName, cellFlag);
-  vtkNew<vtkTetScalarSelection> selection;
-  selection->SetVectorMode(self->GetVectorMode());
-  selection->SetVectorComponent(self->GetVectorComponent());
-  if (array && !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), property))
+  // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
+  // scalar selection set for it.
+  std::string inputError;
+  vtkDataSet* input = this->Input.Prepare(self, dataObject, property, builder, inputError);
+  if (!input)
   {
-    this->ReportError(
-      std::string("Not rendered: ") + selection->GetErrorMessage() + ". Nothing is drawn.");
+    this->ReportError(inputError + ". Nothing is drawn.");
     return false;
   }
-  builder->SetVectorMode(
-    selection->GetMagnitude() ? vtkTetMeshBuilder::Magnitude : vtkTetMeshBuilder::Component);
-  builder->SetVectorComponent(selection->GetComponent());
 
   // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   vtkTetMesh* mesh = builder->Build(input);
   vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
+  if (report)
+  {
+    this->Input.ReportBlocks(report);
+  }
   if (report && report->GetMTime() > this->ReportedTime)
   {
     self->ValidationReport->DeepCopy(report);
@@ -2060,7 +2054,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   vtkVolumeProperty* property = vol->GetProperty();
-  vtkUnstructuredGridBase* input = this->GetInput();
+  // A vtkUnstructuredGridBase or a composite data set (vtkDataObjectTree).
+  vtkDataObject* input =
+    this->GetNumberOfInputConnections(0) > 0 ? this->GetInputDataObject(0, 0) : nullptr;
   if (!input)
   {
     impl->ReportError("No input. Nothing is drawn.");

@@ -43,6 +43,9 @@ void vtkTetMeshValidationReport::Reset()
   this->NumberOfCrackFaces = 0;
   this->NumberOfDuplicatePoints = 0;
   this->NumberOfNonFiniteScalars = 0;
+  this->NumberOfBlocks = 0;
+  this->NumberOfEmptyBlocks = 0;
+  this->NumberOfSharedPoints = 0;
   this->DegenerateCellIds->Reset();
   this->ErrorMessage.clear();
   this->Modified();
@@ -94,6 +97,12 @@ std::string vtkTetMeshValidationReport::GetSummary() const
   text << this->NumberOfInputCells << " input cells and " << this->NumberOfInputPoints
        << " points gave " << this->NumberOfTetrahedra << " tetrahedra with "
        << this->NumberOfBoundaryFaces << " boundary faces";
+  if (this->NumberOfBlocks > 0)
+  {
+    text << " (a composite input of " << this->NumberOfBlocks << " blocks, "
+         << this->NumberOfEmptyBlocks << " empty, merged into one grid with "
+         << this->NumberOfSharedPoints << " points shared between blocks)";
+  }
   struct Item
   {
     vtkIdType Count;
@@ -144,6 +153,9 @@ void vtkTetMeshValidationReport::DeepCopy(vtkTetMeshValidationReport* other)
   this->NumberOfCrackFaces = other->NumberOfCrackFaces;
   this->NumberOfDuplicatePoints = other->NumberOfDuplicatePoints;
   this->NumberOfNonFiniteScalars = other->NumberOfNonFiniteScalars;
+  this->NumberOfBlocks = other->NumberOfBlocks;
+  this->NumberOfEmptyBlocks = other->NumberOfEmptyBlocks;
+  this->NumberOfSharedPoints = other->NumberOfSharedPoints;
   this->DegenerateCellIds->DeepCopy(other->DegenerateCellIds);
   this->ErrorMessage = other->ErrorMessage;
   this->Modified();
@@ -173,4 +185,7 @@ void vtkTetMeshValidationReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfCrackFaces: " << this->NumberOfCrackFaces << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfNonFiniteScalars: " << this->NumberOfNonFiniteScalars << "\n";
+  os << indent << "NumberOfBlocks: " << this->NumberOfBlocks << "\n";
+  os << indent << "NumberOfEmptyBlocks: " << this->NumberOfEmptyBlocks << "\n";
+  os << indent << "NumberOfSharedPoints: " << this->NumberOfSharedPoints << "\n";
 }

@@ -111,6 +111,20 @@ public:
 
   ///@{
   /**
+   * Composite input (a vtkDataObjectTree merged by vtkTetMeshBlockMerger; 0 otherwise): its
+   * leaves, the empty ones skipped, and the points merged with an identical point (coordinates
+   * and scalar) of an earlier block. Set by the mapper, not by the builder.
+   */
+  vtkSetMacro(NumberOfBlocks, vtkIdType);
+  vtkGetMacro(NumberOfBlocks, vtkIdType);
+  vtkSetMacro(NumberOfEmptyBlocks, vtkIdType);
+  vtkGetMacro(NumberOfEmptyBlocks, vtkIdType);
+  vtkSetMacro(NumberOfSharedPoints, vtkIdType);
+  vtkGetMacro(NumberOfSharedPoints, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Scalar defects: NaN or infinite scalar values (counted per point or per cell, following
    * the scalar mode). Tetrahedra that touch a non-finite value are transparent.
    */
@@ -176,6 +190,9 @@ protected:
   vtkIdType NumberOfCrackFaces = 0;
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfNonFiniteScalars = 0;
+  vtkIdType NumberOfBlocks = 0;
+  vtkIdType NumberOfEmptyBlocks = 0;
+  vtkIdType NumberOfSharedPoints = 0;
   vtkSmartPointer<vtkIdTypeArray> DegenerateCellIds;
   std::string ErrorMessage;
 

@@ -12,7 +12,8 @@
  * @class   vtkTiledRayCastVolumeMapper
  * @brief   GPU volume rendering of tetrahedral meshes: tiled ray casting with depth peeling
  *
- * A drop-in vtkUnstructuredGridVolumeMapper that renders a vtkUnstructuredGrid on the GPU inside
+ * A drop-in vtkUnstructuredGridVolumeMapper that renders a vtkUnstructuredGrid (or a composite
+ * data set of them, see SetInputData(vtkDataObjectTree*)) on the GPU inside
  * VTK's own render window, after Bernardon, Pagot, Comba and Silva, "GPU-based Tiled Ray Casting
  * using Depth Peeling" (2004), on today's OpenGL:
  *
@@ -49,6 +50,7 @@
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeMapper.h"
 
+class vtkDataObjectTree;
 class vtkRenderWindow;
 class vtkTetMeshValidationReport;
 class vtkTiledRayCastStatistics;
@@ -285,6 +287,24 @@ public:
   vtkBooleanMacro(SynchronousStatistics, bool);
   ///@}
 
+  ///@{
+  /**
+   * Composite input. Besides a vtkUnstructuredGridBase, the input may be any vtkDataObjectTree
+   * (vtkMultiBlockDataSet, vtkPartitionedDataSet, vtkPartitionedDataSetCollection) of
+   * unstructured grids: `mapper->SetInputConnection(multiblockReader->GetOutputPort())` or
+   * SetInputData(tree). Its blocks are merged into one mesh and rendered in one traversal, each
+   * block's scalars selected on their own (by name with SelectScalarArray(name)), through the
+   * one volume property; points of different blocks with the same coordinates and scalar are
+   * merged, so that blocks sharing faces render as one mesh (vtkTetMeshBlockMerger). Empty
+   * blocks are skipped (counted in the validation report); a block of another type (image or
+   * polygonal data) is an error, and nothing is drawn.
+   */
+  using Superclass::SetInputData;
+  virtual void SetInputData(vtkDataObjectTree* input);
+  double* GetBounds() override;
+  using Superclass::GetBounds;
+  ///@}
+
   /**
    * Whether this mapper can render in `window` (a window already rendered once, so that its
    * OpenGL context exists) with its present settings: the context has what the chosen Pipeline
@@ -309,6 +329,9 @@ public:
 protected:
   vtkTiledRayCastVolumeMapper();
   ~vtkTiledRayCastVolumeMapper() override;
+
+  // vtkUnstructuredGridBase or vtkDataObjectTree.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int MeshLayout = COMPACT_LAYOUT;
