@@ -389,6 +389,7 @@ public:
   std::vector<FaceEntry> FaceEntries;
   std::vector<uint32_t> FaceCounts;
   std::vector<uint64_t> BucketStarts;
+  std::vector<uint8_t> FaceSides; // face matching: the parity of each face, 4 bits per tet
   // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
   std::vector<uint64_t> SortKeys;
   std::vector<uint64_t> SortScratch;
@@ -483,7 +484,7 @@ public:
   vtkIdType ScratchSize() const
   {
     return static_cast<vtkIdType>(Bytes(this->FaceEntries) + Bytes(this->FaceCounts) +
-      Bytes(this->BucketStarts) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
+      Bytes(this->BucketStarts) + Bytes(this->FaceSides) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
       Bytes(this->SortTetPoints) + Bytes(this->SortCellIds) + Bytes(this->PointBuckets) +
       Bytes(this->PointBucketStarts) + Bytes(this->PointOrder) + Bytes(this->Canonical));
   }
@@ -493,6 +494,7 @@ public:
     Free(this->FaceEntries);
     Free(this->FaceCounts);
     Free(this->BucketStarts);
+    Free(this->FaceSides);
     Free(this->SortKeys);
     Free(this->SortScratch);
     Free(this->SortTetPoints);
@@ -1058,12 +1060,17 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
     this->FaceEntries.resize(static_cast<size_t>(running));
   }
   FaceEntry* entries = this->FaceEntries.data();
+  // The side of each face (bit i of a tetrahedron's byte: FaceParity of face i), while its
+  // points are in cache: matching then tells overlapping pairs apart without reading them.
+  this->FaceSides.resize(static_cast<size_t>(numTets));
+  uint8_t* sides = this->FaceSides.data();
   ForBlocks(numTets, blocks,
     [&](int b, vtkIdType begin, vtkIdType end)
     {
       uint32_t* offset = counts.data() + static_cast<size_t>(b) * numPoints;
       for (vtkIdType t = begin; t < end; ++t)
       {
+        uint8_t side = 0;
         ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
           [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
           {
@@ -1071,7 +1078,9 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             e.Mid = mid;
             e.Hi = hi;
             e.Face = face;
+            side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
           });
+        sides[t] = side;
       }
     });
 
@@ -1079,10 +1088,11 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
   // Two non-degenerate tetrahedra on one side of a face overlap (vtkTetMeshOverlapRule).
   const uint8_t* flags = mesh->TetFlags.data();
   const uint32_t* inputCells = mesh->TetInputCellIds.data();
-  auto overlap = [tp, flags](uint32_t a, uint32_t b)
+  auto side = [sides](uint32_t f) { return ((sides[f >> 2] >> (f & 3u)) & 1u) != 0; };
+  auto overlap = [side, flags](uint32_t a, uint32_t b)
   {
-    return !(flags[a >> 2] & vtkTetMesh::Degenerate) && !(flags[b >> 2] & vtkTetMesh::Degenerate) &&
-      FaceParity(tp, a) == FaceParity(tp, b);
+    return side(a) == side(b) && !(flags[a >> 2] & vtkTetMesh::Degenerate) &&
+      !(flags[b >> 2] & vtkTetMesh::Degenerate);
   };
   std::vector<uint32_t> leftOut;
   std::mutex leftOutMutex;
@@ -1180,7 +1190,7 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             for (FaceEntry* e = run; e < runEnd; ++e)
             {
               const uint32_t t = e->Face >> 2;
-              rule.push_back({ e->Face, FaceParity(tp, e->Face),
+              rule.push_back({ e->Face, side(e->Face),
                 (flags[t] & vtkTetMesh::Degenerate) != 0, inputCells[t] });
             }
             uint32_t link[2];

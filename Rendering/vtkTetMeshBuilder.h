@@ -178,7 +178,7 @@ public:
   ///@{
   /**
    * The builder keeps its scratch buffers (face matching, spatial sort, duplicate search:
-   * about 60 bytes per tetrahedron, 95 with spatial ordering) between builds, because allocating and first touching
+   * about 61 bytes per tetrahedron, 96 with spatial ordering) between builds, because allocating and first touching
    * fresh memory costs more than the work done in it. ReleaseScratchMemory() frees them (a
    * mapper may call it once the mesh is built, when topology changes are rare);
    * GetScratchMemorySize() says how many bytes they hold.
