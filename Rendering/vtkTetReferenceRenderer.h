@@ -15,7 +15,9 @@
  * Renders what a vtkUnstructuredGridVolumeMapper should show for a mesh, a volume property, a
  * camera and an image size, in double precision on the CPU, without approximation beyond
  * rounding and the stated tolerance of vtkTetRayIntegrator. Every accuracy figure of the project
- * is measured against it, so it shares no code with the GPU path and needs no mesh topology.
+ * is measured against it, so it shares no code with the GPU path and needs no mesh topology;
+ * the one thing it shares with the mesh builder is the rule that picks the scalar a property
+ * takes from an array (vtkTetScalarSelection), so that both render the same field.
  *
  * Per pixel, one ray runs from the near to the far plane through the pixel's sample position
  * (its centre by default), as docs/design.md fixes it. A bounding volume hierarchy over all

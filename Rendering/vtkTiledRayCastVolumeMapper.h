@@ -310,7 +310,8 @@ public:
    * OpenGL context exists) with its present settings: the context has what the chosen Pipeline
    * needs (OpenGL 3.3 or 3.2 with GL_ARB_explicit_attrib_location for the fragment pipeline and
    * the automatic choice, 4.3 for the compute pipeline) and the blend mode is composite. The
-   * property is not consulted (any vtkVolumeProperty renders; may be null). VTK's name and
+   * property is not consulted (may be null): whether it suits the input's scalars (several
+   * components, see VectorMode) is known only with the input, and refused at Render(). VTK's name and
    * signature, as on vtkGPUVolumeRayCastMapper; 0 in this abstract class, the OpenGL
    * implementation answers.
    */
