@@ -10,9 +10,10 @@
 =========================================================================*/
 // Tetrahedra that overlap through a shared face (vtkTetMeshOverlapRule, docs/mesh-layout.md):
 // three tetrahedra on one face (two above it, one below), in both input orders, and a block of
-// tetrahedra with one cell listed twice. Every image is compared, from four views, with the
-// exact reference (which follows the same rule with code of its own) and with the reference of
-// the mesh without the tetrahedra the rule leaves out (an independent statement of the rule).
+// tetrahedra with one cell listed twice (the first case in the fragment pipeline too). Every
+// image is compared, from four views, with the exact reference (which follows the same rule
+// with code of its own) and with the reference of the mesh without the tetrahedra the rule
+// leaves out (an independent statement of the rule).
 // Before the rule, the GPU followed one tetrahedron of the pair above the face while the
 // reference composited both: the face of three up to RMSE 13.6, max 97/255 off (4 views, both
 // orders), the cell listed twice up to RMSE 1.9, max 22.
@@ -89,12 +90,13 @@ vtkSmartPointer<vtkUnstructuredGrid> BlockWithCopy(vtkIdType duplicate, bool wit
 // Renders `grid` from four views against the reference (its own rule) and against the
 // reference of `withoutLeftOut`; checks the report's count of tetrahedra left out.
 bool Check(const std::string& label, vtkUnstructuredGrid* grid, vtkUnstructuredGrid* withoutLeftOut,
-  vtkIdType leftOut)
+  vtkIdType leftOut, int pipeline = vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE)
 {
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
   auto property = trctest::MakeProperty(range[0], range[1], 0.15 * grid->GetLength());
   trctest::WatchedVolume view(grid, property, 96);
+  view.Mapper->SetPipeline(pipeline);
   bool ok = true;
   const double views[4][2] = { { 0, 80 }, { 0, -80 }, { 45, 30 }, { 200, -20 } };
   for (int v = 0; v < 4; ++v)
@@ -136,6 +138,10 @@ int TestTiledRayCastNonManifold(int, char*[])
   ok = Check("face of three, E first", FaceOfThree({ 3, 4, 5 }), FaceOfThree({ 3, 4 }), 1) && ok;
   // G first: E is left out.
   ok = Check("face of three, G first", FaceOfThree({ 5, 4, 3 }), FaceOfThree({ 5, 4 }), 1) && ok;
+  // The fragment pipeline walks the same links.
+  ok = Check("face of three, fragment pipeline", FaceOfThree({ 3, 4, 5 }), FaceOfThree({ 3, 4 }), 1,
+         vtkTiledRayCastVolumeMapper::FRAGMENT_PIPELINE) &&
+    ok;
   // A cell of the block's middle listed twice: the copy is left out.
   auto block = BlockWithCopy(0, false);
   const vtkIdType middle = block->GetNumberOfCells() / 2;
