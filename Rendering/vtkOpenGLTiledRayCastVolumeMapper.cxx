@@ -40,10 +40,12 @@
 #include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
 #include "vtkTetMeshValidationReport.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
+#include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -299,6 +301,7 @@ public:
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
   vtkNew<vtkTetMeshBuilder> Builder;
+  vtkTiledRayCastMeshInput Input;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
   int LayoutKind = -1;
   int LayoutTextureLimit = 0;
@@ -392,7 +395,7 @@ public:
 
   void ReportError(const std::string& message);
   bool CheckContext(vtkOpenGLRenderWindow* window);
-  bool UpdateMesh(vtkDataSet* input);
+  bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
@@ -628,25 +631,31 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* input)
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
+  vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   vtkTetMeshBuilder* builder = this->Builder;
-  builder->SetScalarMode(self->GetScalarMode());
-  builder->SetArrayAccessMode(self->GetArrayAccessMode());
-  builder->SetArrayId(self->ArrayId);
-  builder->SetArrayName(self->ArrayName);
-  builder->SetVectorMode(self->GetVectorMode() == vtkTiledRayCastVolumeMapper::MAGNITUDE
-      ? vtkTetMeshBuilder::Magnitude
-      : vtkTetMeshBuilder::Component);
-  builder->SetVectorComponent(self->GetVectorComponent());
   builder->SetSpatialOrdering(self->GetSpatialOrdering());
+  // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
+  // scalar selection set for it.
+  std::string inputError;
+  vtkDataSet* input = this->Input.Prepare(self, dataObject, property, builder, inputError);
+  if (!input)
+  {
+    this->ReportError(inputError + ". Nothing is drawn.");
+    return false;
+  }
 
   // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   vtkTetMesh* mesh = builder->Build(input);
   vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
+  if (report)
+  {
+    this->Input.ReportBlocks(report);
+  }
   if (report && report->GetMTime() > this->ReportedTime)
   {
     self->ValidationReport->DeepCopy(report);
@@ -2060,7 +2069,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   vtkVolumeProperty* property = vol->GetProperty();
-  vtkUnstructuredGridBase* input = this->GetInput();
+  // A vtkUnstructuredGridBase or a composite data set (vtkDataObjectTree).
+  vtkDataObject* input =
+    this->GetNumberOfInputConnections(0) > 0 ? this->GetInputDataObject(0, 0) : nullptr;
   if (!input)
   {
     impl->ReportError("No input. Nothing is drawn.");
@@ -2082,7 +2093,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // CPU work: only what changed.
-  if (!impl->UpdateMesh(input))
+  if (!impl->UpdateMesh(input, property))
   {
     return;
   }

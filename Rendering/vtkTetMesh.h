@@ -66,12 +66,16 @@ public:
    * - NonFiniteScalars: touches a NaN or infinite scalar; it is traversed but transparent.
    * - Inverted: was negatively oriented (and not degenerate) in the input and has been
    *   reoriented (p2 <-> p3).
+   * - Overlapping: left out of the rendering, because it overlaps an earlier tetrahedron on the
+   *   same side of a face they share (vtkTetMeshOverlapRule, docs/mesh-layout.md): it has no
+   *   neighbour and none of its faces is a boundary face, so no ray ever enters it.
    */
   enum TetFlag
   {
     Degenerate = 1,
     NonFiniteScalars = 2,
-    Inverted = 4
+    Inverted = 4,
+    Overlapping = 8
   };
 
   ///@{

@@ -31,7 +31,9 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
+#include "vtkTetMeshOverlapRule.h"
 #include "vtkTetMeshValidationReport.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -41,6 +43,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -148,40 +151,6 @@ struct CopyPointsWorker
         for (vtkIdType i = 3 * begin; i < 3 * end; ++i)
         {
           out[i] = static_cast<double>(values[i]);
-        }
-      });
-  }
-};
-
-//------------------------------------------------------------------------------
-// One value per tuple out of any numeric array: one component, or the magnitude.
-struct ExtractScalarsWorker
-{
-  template <typename ArrayT>
-  void operator()(ArrayT* array, double* out, int component, bool magnitude) const
-  {
-    const auto tuples = vtk::DataArrayTupleRange(array);
-    const int numComponents = array->GetNumberOfComponents();
-    vtkSMPTools::For(0, array->GetNumberOfTuples(), 8192,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          const auto tuple = tuples[i];
-          if (magnitude)
-          {
-            double sum = 0.0;
-            for (int c = 0; c < numComponents; ++c)
-            {
-              const double v = static_cast<double>(tuple[c]);
-              sum += v * v;
-            }
-            out[i] = std::sqrt(sum);
-          }
-          else
-          {
-            out[i] = static_cast<double>(tuple[component]);
-          }
         }
       });
   }
@@ -404,6 +373,7 @@ public:
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfOverlappingTetrahedra = 0;
   vtkIdType NumberOfCrackFaces = 0;
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfNonFiniteScalars = 0;
@@ -419,6 +389,7 @@ public:
   std::vector<FaceEntry> FaceEntries;
   std::vector<uint32_t> FaceCounts;
   std::vector<uint64_t> BucketStarts;
+  std::vector<uint8_t> FaceSides; // face matching: the parity of each face, 4 bits per tet
   // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
   std::vector<uint64_t> SortKeys;
   std::vector<uint64_t> SortScratch;
@@ -482,6 +453,7 @@ public:
     report->SetNumberOfInvertedTetrahedra(this->NumberOfInvertedTetrahedra);
     report->SetNumberOfDegenerateTetrahedra(this->NumberOfDegenerateTetrahedra);
     report->SetNumberOfNonManifoldFaces(this->NumberOfNonManifoldFaces);
+    report->SetNumberOfOverlappingTetrahedra(this->NumberOfOverlappingTetrahedra);
     report->SetNumberOfCrackFaces(this->NumberOfCrackFaces);
     report->SetNumberOfDuplicatePoints(this->NumberOfDuplicatePoints);
     report->SetNumberOfNonFiniteScalars(this->NumberOfNonFiniteScalars);
@@ -512,7 +484,7 @@ public:
   vtkIdType ScratchSize() const
   {
     return static_cast<vtkIdType>(Bytes(this->FaceEntries) + Bytes(this->FaceCounts) +
-      Bytes(this->BucketStarts) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
+      Bytes(this->BucketStarts) + Bytes(this->FaceSides) + Bytes(this->SortKeys) + Bytes(this->SortScratch) +
       Bytes(this->SortTetPoints) + Bytes(this->SortCellIds) + Bytes(this->PointBuckets) +
       Bytes(this->PointBucketStarts) + Bytes(this->PointOrder) + Bytes(this->Canonical));
   }
@@ -522,6 +494,7 @@ public:
     Free(this->FaceEntries);
     Free(this->FaceCounts);
     Free(this->BucketStarts);
+    Free(this->FaceSides);
     Free(this->SortKeys);
     Free(this->SortScratch);
     Free(this->SortTetPoints);
@@ -1087,12 +1060,17 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
     this->FaceEntries.resize(static_cast<size_t>(running));
   }
   FaceEntry* entries = this->FaceEntries.data();
+  // The side of each face (bit i of a tetrahedron's byte: FaceParity of face i), while its
+  // points are in cache: matching then tells overlapping pairs apart without reading them.
+  this->FaceSides.resize(static_cast<size_t>(numTets));
+  uint8_t* sides = this->FaceSides.data();
   ForBlocks(numTets, blocks,
     [&](int b, vtkIdType begin, vtkIdType end)
     {
       uint32_t* offset = counts.data() + static_cast<size_t>(b) * numPoints;
       for (vtkIdType t = begin; t < end; ++t)
       {
+        uint8_t side = 0;
         ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
           [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
           {
@@ -1100,16 +1078,30 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             e.Mid = mid;
             e.Hi = hi;
             e.Face = face;
+            side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
           });
+        sides[t] = side;
       }
     });
 
   std::atomic<vtkIdType> nonManifold(0);
+  // Two non-degenerate tetrahedra on one side of a face overlap (vtkTetMeshOverlapRule).
+  const uint8_t* flags = mesh->TetFlags.data();
+  const uint32_t* inputCells = mesh->TetInputCellIds.data();
+  auto side = [sides](uint32_t f) { return ((sides[f >> 2] >> (f & 3u)) & 1u) != 0; };
+  auto overlap = [side, flags](uint32_t a, uint32_t b)
+  {
+    return side(a) == side(b) && !(flags[a >> 2] & vtkTetMesh::Degenerate) &&
+      !(flags[b >> 2] & vtkTetMesh::Degenerate);
+  };
+  std::vector<uint32_t> leftOut;
+  std::mutex leftOutMutex;
   vtkSMPTools::For(0, static_cast<vtkIdType>(numPoints), 2048,
     [&](vtkIdType vb, vtkIdType ve)
     {
       vtkIdType localNonManifold = 0;
-      std::vector<uint32_t> even, odd;
+      std::vector<vtkTetMeshOverlapRule::Entry> rule;
+      std::vector<uint32_t> localLeftOut;
       // A small open-addressing table per bucket: slot -> 1 + index of the first face seen
       // with that key, the top bit set once it is paired. Linear in the bucket's size, where a
       // sort is not, and buckets of meshes numbered at random hold dozens of faces.
@@ -1151,7 +1143,8 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             const FaceEntry& o = first[(slot & ~Paired) - 1];
             if (SameFace(o, e))
             {
-              if (slot & Paired)
+              // A third tetrahedron, or two on one side (they overlap): the slow path below.
+              if ((slot & Paired) || overlap(o.Face, e.Face))
               {
                 thirdFace = true;
               }
@@ -1170,7 +1163,8 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
         {
           continue;
         }
-        // A face shared by more than two tetrahedra (rare): start the bucket over, sorted.
+        // A face shared by more than two tetrahedra or by two on one side (rare): start the
+        // bucket over, sorted, and follow vtkTetMeshOverlapRule.
         for (FaceEntry* e = first; e < last; ++e)
         {
           neighbors[e->Face] = NoNeighbor;
@@ -1184,35 +1178,42 @@ void vtkTetMeshBuilder::vtkInternals::MatchFaces()
             ++runEnd;
           }
           const ptrdiff_t m = runEnd - run;
-          if (m == 2)
+          if (m == 2 && !overlap(run[0].Face, run[1].Face))
           {
             neighbors[run[0].Face] = run[1].Face;
             neighbors[run[1].Face] = run[0].Face;
           }
-          else if (m > 2)
+          else if (m >= 2)
           {
-            // Only tetrahedra on opposite sides can be neighbours (a ray leaving one enters
-            // the other): pair them in order, leave the rest as boundary faces.
-            ++localNonManifold;
-            even.clear();
-            odd.clear();
+            localNonManifold += m > 2 ? 1 : 0;
+            rule.clear();
             for (FaceEntry* e = run; e < runEnd; ++e)
             {
-              (FaceParity(tp, e->Face) ? even : odd).push_back(e->Face);
+              const uint32_t t = e->Face >> 2;
+              rule.push_back({ e->Face, side(e->Face),
+                (flags[t] & vtkTetMesh::Degenerate) != 0, inputCells[t] });
             }
-            const size_t pairs = std::min(even.size(), odd.size());
-            for (size_t k = 0; k < pairs; ++k)
+            uint32_t link[2];
+            vtkTetMeshOverlapRule::Resolve(rule.data(), rule.size(), link, localLeftOut);
+            if (link[0] != NoNeighbor)
             {
-              neighbors[even[k]] = odd[k];
-              neighbors[odd[k]] = even[k];
+              neighbors[link[0]] = link[1];
+              neighbors[link[1]] = link[0];
             }
           }
           run = runEnd;
         }
       }
       nonManifold += localNonManifold;
+      if (!localLeftOut.empty())
+      {
+        std::lock_guard<std::mutex> lock(leftOutMutex);
+        leftOut.insert(leftOut.end(), localLeftOut.begin(), localLeftOut.end());
+      }
     });
   this->NumberOfNonManifoldFaces = nonManifold;
+  this->NumberOfOverlappingTetrahedra = vtkTetMeshOverlapRule::Apply(
+    leftOut, neighbors, mesh->TetFlags.data(), static_cast<uint8_t>(vtkTetMesh::Overlapping));
 }
 
 //------------------------------------------------------------------------------
@@ -1299,6 +1300,10 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
   vtkTetMesh* mesh = this->Mesh;
   const vtkIdType numFaces = 4 * mesh->GetNumberOfTetrahedra();
   const uint32_t* neighbors = mesh->TetNeighbors.data();
+  const uint8_t* flags = mesh->TetFlags.data();
+  // Faces of tetrahedra left out (vtkTetMeshOverlapRule) are no boundary: they are never entered.
+  auto boundary = [neighbors, flags](vtkIdType f)
+  { return neighbors[f] == NoNeighbor && !(flags[f >> 2] & vtkTetMesh::Overlapping); };
   const int blocks = NumberOfBlocks(numFaces);
   std::vector<size_t> counts(static_cast<size_t>(blocks) + 1, 0);
   ForBlocks(numFaces, blocks,
@@ -1307,7 +1312,7 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
       size_t n = 0;
       for (vtkIdType f = begin; f < end; ++f)
       {
-        n += neighbors[f] == NoNeighbor ? 1 : 0;
+        n += boundary(f) ? 1 : 0;
       }
       counts[b + 1] = n;
     });
@@ -1320,7 +1325,7 @@ void vtkTetMeshBuilder::vtkInternals::CollectBoundaryFaces()
       size_t pos = counts[b];
       for (vtkIdType f = begin; f < end; ++f)
       {
-        if (neighbors[f] == NoNeighbor)
+        if (boundary(f))
         {
           out[pos++] = static_cast<uint32_t>(f);
         }
@@ -1653,11 +1658,7 @@ bool vtkTetMeshBuilder::vtkInternals::ReadScalars(
 
   std::vector<double>& values = cellFlag == 0 ? mesh->PointScalars : this->InputCellScalars;
   values.resize(static_cast<size_t>(expected));
-  ExtractScalarsWorker worker;
-  if (!vtkArrayDispatch::Dispatch::Execute(array, worker, values.data(), component, magnitude))
-  {
-    worker(array, values.data(), component, magnitude);
-  }
+  vtkTetScalarSelection::Extract(array, magnitude, component, values.data());
 
   double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   vtkIdType nonFinite = 0;
@@ -1872,6 +1873,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     in.NumberOfSplitCells = in.NumberOfIgnoredCells = in.NumberOfInvalidCells = 0;
     in.NumberOfInvertedTetrahedra = in.NumberOfDegenerateTetrahedra = 0;
     in.NumberOfNonManifoldFaces = in.NumberOfCrackFaces = in.NumberOfDuplicatePoints = 0;
+    in.NumberOfOverlappingTetrahedra = 0;
     in.NumberOfNonFiniteScalars = 0;
     in.DegenerateCellIds.clear();
     in.TopologyError.clear();

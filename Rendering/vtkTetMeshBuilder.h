@@ -50,8 +50,10 @@
  * Validation (into the mesh's vtkTetMeshValidationReport): inverted tetrahedra (reoriented),
  * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept, never
  * reoriented: the sign of a zero volume is noise), non-manifold faces
- * (more than two tetrahedra on one face: tetrahedra on opposite sides are paired, the rest are
- * boundary), crack faces (boundary faces that overlap, in the same plane and facing the other
+ * (more than two tetrahedra on one face) and overlapping tetrahedra (two on the same side of a
+ * shared face: all but the first in input order on each side are left out, flagged
+ * vtkTetMesh::Overlapping, see vtkTetMeshOverlapRule; decided at full builds only, like
+ * duplicates and cracks), crack faces (boundary faces that overlap, in the same plane and facing the other
  * way, a boundary face made of coincident but distinct points), NaN/Inf scalars (their
  * tetrahedra flagged transparent) and duplicate points (exactly equal coordinates).
  *
@@ -178,7 +180,7 @@ public:
   ///@{
   /**
    * The builder keeps its scratch buffers (face matching, spatial sort, duplicate search:
-   * about 60 bytes per tetrahedron, 95 with spatial ordering) between builds, because allocating and first touching
+   * about 61 bytes per tetrahedron, 96 with spatial ordering) between builds, because allocating and first touching
    * fresh memory costs more than the work done in it. ReleaseScratchMemory() frees them (a
    * mapper may call it once the mesh is built, when topology changes are rare);
    * GetScratchMemorySize() says how many bytes they hold.

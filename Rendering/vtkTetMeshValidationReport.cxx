@@ -39,9 +39,13 @@ void vtkTetMeshValidationReport::Reset()
   this->NumberOfInvertedTetrahedra = 0;
   this->NumberOfDegenerateTetrahedra = 0;
   this->NumberOfNonManifoldFaces = 0;
+  this->NumberOfOverlappingTetrahedra = 0;
   this->NumberOfCrackFaces = 0;
   this->NumberOfDuplicatePoints = 0;
   this->NumberOfNonFiniteScalars = 0;
+  this->NumberOfBlocks = 0;
+  this->NumberOfEmptyBlocks = 0;
+  this->NumberOfSharedPoints = 0;
   this->DegenerateCellIds->Reset();
   this->ErrorMessage.clear();
   this->Modified();
@@ -67,6 +71,7 @@ bool vtkTetMeshValidationReport::HasDefects() const
   return this->NumberOfSplitCells > 0 || this->NumberOfIgnoredCells > 0 ||
     this->NumberOfInvalidCells > 0 || this->NumberOfInvertedTetrahedra > 0 ||
     this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfOverlappingTetrahedra > 0 ||
     this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
     this->NumberOfNonFiniteScalars > 0;
 }
@@ -76,6 +81,7 @@ bool vtkTetMeshValidationReport::HasProblems() const
 {
   return this->NumberOfIgnoredCells > 0 || this->NumberOfInvalidCells > 0 ||
     this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
+    this->NumberOfOverlappingTetrahedra > 0 ||
     this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
     this->NumberOfNonFiniteScalars > 0;
 }
@@ -91,6 +97,12 @@ std::string vtkTetMeshValidationReport::GetSummary() const
   text << this->NumberOfInputCells << " input cells and " << this->NumberOfInputPoints
        << " points gave " << this->NumberOfTetrahedra << " tetrahedra with "
        << this->NumberOfBoundaryFaces << " boundary faces";
+  if (this->NumberOfBlocks > 0)
+  {
+    text << " (a composite input of " << this->NumberOfBlocks << " blocks, "
+         << this->NumberOfEmptyBlocks << " empty, merged into one grid with "
+         << this->NumberOfSharedPoints << " points shared between blocks)";
+  }
   struct Item
   {
     vtkIdType Count;
@@ -103,6 +115,8 @@ std::string vtkTetMeshValidationReport::GetSummary() const
     { this->NumberOfInvertedTetrahedra, "inverted tetrahedra reoriented" },
     { this->NumberOfDegenerateTetrahedra, "degenerate (zero-volume) tetrahedra" },
     { this->NumberOfNonManifoldFaces, "non-manifold faces (shared by more than two cells)" },
+    { this->NumberOfOverlappingTetrahedra,
+      "overlapping tetrahedra left out (on the same side of a shared face as an earlier one)" },
     { this->NumberOfCrackFaces, "crack faces (coincident but not shared)" },
     { this->NumberOfDuplicatePoints, "duplicate points" },
     { this->NumberOfNonFiniteScalars, "NaN or infinite scalars (made transparent)" },
@@ -135,9 +149,13 @@ void vtkTetMeshValidationReport::DeepCopy(vtkTetMeshValidationReport* other)
   this->NumberOfInvertedTetrahedra = other->NumberOfInvertedTetrahedra;
   this->NumberOfDegenerateTetrahedra = other->NumberOfDegenerateTetrahedra;
   this->NumberOfNonManifoldFaces = other->NumberOfNonManifoldFaces;
+  this->NumberOfOverlappingTetrahedra = other->NumberOfOverlappingTetrahedra;
   this->NumberOfCrackFaces = other->NumberOfCrackFaces;
   this->NumberOfDuplicatePoints = other->NumberOfDuplicatePoints;
   this->NumberOfNonFiniteScalars = other->NumberOfNonFiniteScalars;
+  this->NumberOfBlocks = other->NumberOfBlocks;
+  this->NumberOfEmptyBlocks = other->NumberOfEmptyBlocks;
+  this->NumberOfSharedPoints = other->NumberOfSharedPoints;
   this->DegenerateCellIds->DeepCopy(other->DegenerateCellIds);
   this->ErrorMessage = other->ErrorMessage;
   this->Modified();
@@ -162,7 +180,12 @@ void vtkTetMeshValidationReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
+  os << indent << "NumberOfOverlappingTetrahedra: " << this->NumberOfOverlappingTetrahedra
+     << "\n";
   os << indent << "NumberOfCrackFaces: " << this->NumberOfCrackFaces << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfNonFiniteScalars: " << this->NumberOfNonFiniteScalars << "\n";
+  os << indent << "NumberOfBlocks: " << this->NumberOfBlocks << "\n";
+  os << indent << "NumberOfEmptyBlocks: " << this->NumberOfEmptyBlocks << "\n";
+  os << indent << "NumberOfSharedPoints: " << this->NumberOfSharedPoints << "\n";
 }

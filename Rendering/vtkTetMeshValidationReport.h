@@ -90,8 +90,10 @@ public:
 
   ///@{
   /**
-   * Topological defects. A non-manifold face is shared by more than two tetrahedra; its
-   * tetrahedra are connected pairwise as far as possible and the rest treated as boundary. A
+   * Topological defects. A non-manifold face is shared by more than two tetrahedra. Two
+   * tetrahedra on the same side of a face they share overlap: the later one in input order is
+   * left out of the rendering (an overlapping tetrahedron; the reference renderer leaves it out
+   * too, see vtkTetMeshOverlapRule), and the first one of each side are neighbours. A
    * crack face is a boundary face that coincides geometrically with another boundary face
    * without sharing its points (unwelded points, as along the periodic seam of
    * post_tets5_classic). Rays leave the mesh through one and re-enter through the other.
@@ -99,10 +101,26 @@ public:
    */
   vtkSetMacro(NumberOfNonManifoldFaces, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldFaces, vtkIdType);
+  vtkSetMacro(NumberOfOverlappingTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfOverlappingTetrahedra, vtkIdType);
   vtkSetMacro(NumberOfCrackFaces, vtkIdType);
   vtkGetMacro(NumberOfCrackFaces, vtkIdType);
   vtkSetMacro(NumberOfDuplicatePoints, vtkIdType);
   vtkGetMacro(NumberOfDuplicatePoints, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Composite input (a vtkDataObjectTree merged by vtkTetMeshBlockMerger; 0 otherwise): its
+   * leaves, the empty ones skipped, and the points merged with an identical point (coordinates
+   * and scalar) of an earlier block. Set by the mapper, not by the builder.
+   */
+  vtkSetMacro(NumberOfBlocks, vtkIdType);
+  vtkGetMacro(NumberOfBlocks, vtkIdType);
+  vtkSetMacro(NumberOfEmptyBlocks, vtkIdType);
+  vtkGetMacro(NumberOfEmptyBlocks, vtkIdType);
+  vtkSetMacro(NumberOfSharedPoints, vtkIdType);
+  vtkGetMacro(NumberOfSharedPoints, vtkIdType);
   ///@}
 
   ///@{
@@ -138,8 +156,8 @@ public:
 
   /**
    * True when the input has a problem its user should hear of: ignored or invalid cells,
-   * degenerate tetrahedra, non-manifold or crack faces, duplicate points or non-finite scalars.
-   * Split cells and reoriented (inverted) tetrahedra are normal service: counted, not a problem.
+   * degenerate tetrahedra, non-manifold or crack faces, overlapping tetrahedra, duplicate points
+   * or non-finite scalars. Split cells and reoriented (inverted) tetrahedra are normal service: counted, not a problem.
    * The mapper warns (once per build) only when this is true.
    */
   bool HasProblems() const;
@@ -168,9 +186,13 @@ protected:
   vtkIdType NumberOfInvertedTetrahedra = 0;
   vtkIdType NumberOfDegenerateTetrahedra = 0;
   vtkIdType NumberOfNonManifoldFaces = 0;
+  vtkIdType NumberOfOverlappingTetrahedra = 0;
   vtkIdType NumberOfCrackFaces = 0;
   vtkIdType NumberOfDuplicatePoints = 0;
   vtkIdType NumberOfNonFiniteScalars = 0;
+  vtkIdType NumberOfBlocks = 0;
+  vtkIdType NumberOfEmptyBlocks = 0;
+  vtkIdType NumberOfSharedPoints = 0;
   vtkSmartPointer<vtkIdTypeArray> DegenerateCellIds;
   std::string ErrorMessage;
 

@@ -30,7 +30,9 @@
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetExactArithmetic.h"
+#include "vtkTetReferenceOverlaps.h"
 #include "vtkTetRayIntegrator.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -373,8 +375,11 @@ public:
   bool Valid = false;
   vtkDataSet* Input = nullptr;
   vtkMTimeType InputMTime = 0;
-  int ScalarMode = -1, ArrayAccessMode = -1, ArrayId = -1, VectorMode = -1, VectorComponent = -1;
+  int ScalarMode = -1, ArrayAccessMode = -1, ArrayId = -1;
   std::string ArrayName;
+  // The one scalar taken from the array (vtkTetScalarSelection), resolved with the property.
+  bool Magnitude = false;
+  int Component = 0;
   double Matrix[16];
 
   // The prepared mesh, in world coordinates minus Center, tetrahedra in hierarchy order.
@@ -385,6 +390,7 @@ public:
   std::vector<unsigned char> Transparent;
   std::vector<BVHNode> Nodes;
   double Center[3] = { 0.0, 0.0, 0.0 };
+  size_t NumberOfOverlapping = 0; // tetrahedra left out (vtkTetReferenceOverlaps)
 
   // The property the integrator was initialised with.
   vtkVolumeProperty* Property = nullptr;
@@ -392,8 +398,8 @@ public:
 
   vtkSMPThreadLocal<std::vector<Hit>> Hits;
 
-  bool Prepare(vtkTetReferenceRenderer* self, vtkDataSet* input, const double matrix[16],
-    vtkIdType& degenerate, std::string& error);
+  bool Prepare(vtkTetReferenceRenderer* self, vtkDataSet* input, bool magnitude, int component,
+    const double matrix[16], vtkIdType& degenerate, std::string& error);
 
   // Collect the tetrahedra the ray O + z d crosses for z in (zmin, zmax).
   void CastRay(const double origin[3], const double d[3], double zmin, double zmax,
@@ -402,7 +408,8 @@ public:
 
 //------------------------------------------------------------------------------
 bool vtkTetReferenceRenderer::vtkInternals::Prepare(vtkTetReferenceRenderer* self,
-  vtkDataSet* input, const double matrix[16], vtkIdType& degenerate, std::string& error)
+  vtkDataSet* input, bool magnitude, int component, const double matrix[16], vtkIdType& degenerate,
+  std::string& error)
 {
   this->Valid = false;
   degenerate = 0;
@@ -423,31 +430,12 @@ bool vtkTetReferenceRenderer::vtkInternals::Prepare(vtkTetReferenceRenderer* sel
   }
   const bool cellScalars = cellFlag == 1;
   const vtkIdType numTuples = array->GetNumberOfTuples();
-  const int numComp = array->GetNumberOfComponents();
-  const bool magnitude = self->VectorMode == vtkScalarsToColors::MAGNITUDE && numComp > 1;
-  const int comp = std::min(std::max(self->VectorComponent, 0), numComp - 1);
   vtkNew<vtkDoubleArray> reduced;
   reduced->SetName(CarriedScalarsName);
   reduced->SetNumberOfTuples(numTuples);
-  for (vtkIdType i = 0; i < numTuples; ++i)
-  {
-    double v;
-    if (magnitude)
-    {
-      v = 0.0;
-      for (int k = 0; k < numComp; ++k)
-      {
-        const double c = array->GetComponent(i, k);
-        v += c * c;
-      }
-      v = std::sqrt(v);
-    }
-    else
-    {
-      v = array->GetComponent(i, comp);
-    }
-    reduced->SetValue(i, v);
-  }
+  vtkTetScalarSelection::Extract(array, magnitude, component, reduced->GetPointer(0));
+  this->Magnitude = magnitude;
+  this->Component = component;
 
   // Tetrahedra: used as they are when the input is an unstructured grid whose 3D cells are all
   // tetrahedra (lower-dimensional cells are ignored); otherwise split by VTK.
@@ -638,6 +626,24 @@ bool vtkTetReferenceRenderer::vtkInternals::Prepare(vtkTetReferenceRenderer* sel
     }
     boxes.insert(boxes.end(), box, box + 6);
   }
+  // Tetrahedra on the same side of a face they share overlap: all but the first of each side in
+  // input order are left out, as the mesh builder does (vtkTetReferenceOverlaps).
+  const std::vector<unsigned char> overlapping = vtkTetReferenceOverlaps::Find(tets);
+  this->NumberOfOverlapping = 0;
+  for (size_t t = 0, kept = 0; t < overlapping.size(); ++t)
+  {
+    if (overlapping[t])
+    {
+      ++this->NumberOfOverlapping;
+      continue;
+    }
+    std::copy(tets.begin() + 4 * t, tets.begin() + 4 * t + 4, tets.begin() + 4 * kept);
+    std::copy(boxes.begin() + 6 * t, boxes.begin() + 6 * t + 6, boxes.begin() + 6 * kept);
+    keptCell[kept++] = keptCell[t];
+  }
+  keptCell.resize(keptCell.size() - this->NumberOfOverlapping);
+  tets.resize(4 * keptCell.size());
+  boxes.resize(6 * keptCell.size());
   const size_t numTets = keptCell.size();
   if (numTets == 0)
   {
@@ -699,8 +705,6 @@ bool vtkTetReferenceRenderer::vtkInternals::Prepare(vtkTetReferenceRenderer* sel
   this->ArrayAccessMode = self->ArrayAccessMode;
   this->ArrayId = self->ArrayId;
   this->ArrayName = self->ArrayName ? self->ArrayName : "";
-  this->VectorMode = self->VectorMode;
-  this->VectorComponent = self->VectorComponent;
   std::copy(matrix, matrix + 16, this->Matrix);
   this->Valid = true;
   return true;
@@ -861,7 +865,7 @@ vtkTetReferenceRenderer::vtkTetReferenceRenderer()
   , ArrayAccessMode(VTK_GET_ARRAY_BY_ID)
   , ArrayId(-1)
   , ArrayName(nullptr)
-  , VectorMode(vtkScalarsToColors::COMPONENT)
+  , VectorMode(vtkTetScalarSelection::DEFAULT)
   , VectorComponent(0)
   , VolumeProperty(nullptr)
   , Camera(nullptr)
@@ -999,6 +1003,10 @@ void vtkTetReferenceRenderer::SelectScalarArray(const char* arrayName)
 }
 
 //------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::SetVectorModeToDefault()
+{
+  this->SetVectorMode(vtkTetScalarSelection::DEFAULT);
+}
 void vtkTetReferenceRenderer::SetVectorModeToComponent()
 {
   this->SetVectorMode(vtkScalarsToColors::COMPONENT);
@@ -1078,10 +1086,24 @@ int vtkTetReferenceRenderer::Render()
   double matrix[16];
   vtkMatrix4x4* m = this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix;
   vtkMatrix4x4::DeepCopy(matrix, m);
+  // The one scalar the property takes from the selected array (the mapper's rule).
+  int cellFlag = -1;
+  vtkDataArray* array = vtkAbstractMapper::GetScalars(this->Input, this->ScalarMode,
+    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+  vtkNew<vtkTetScalarSelection> selection;
+  selection->SetVectorMode(this->VectorMode);
+  selection->SetVectorComponent(this->VectorComponent);
+  if (array && !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), property))
+  {
+    vtkErrorMacro("Not rendered: " << selection->GetErrorMessage() << ".");
+    return 0;
+  }
+  const bool magnitude = selection->GetMagnitude();
+  const int component = selection->GetComponent();
   bool fresh = in.Valid && in.Input == this->Input && in.InputMTime == this->Input->GetMTime() &&
     in.ScalarMode == this->ScalarMode && in.ArrayAccessMode == this->ArrayAccessMode &&
     in.ArrayId == this->ArrayId && in.ArrayName == (this->ArrayName ? this->ArrayName : "") &&
-    in.VectorMode == this->VectorMode && in.VectorComponent == this->VectorComponent &&
+    in.Magnitude == magnitude && in.Component == component &&
     std::equal(matrix, matrix + 16, in.Matrix);
   if (!fresh)
   {
@@ -1089,7 +1111,7 @@ int vtkTetReferenceRenderer::Render()
     timer->StartTimer();
     std::string error;
     vtkIdType degenerate = 0;
-    if (!in.Prepare(this, this->Input, matrix, degenerate, error))
+    if (!in.Prepare(this, this->Input, magnitude, component, matrix, degenerate, error))
     {
       vtkErrorMacro(<< error);
       return 0;
@@ -1098,6 +1120,7 @@ int vtkTetReferenceRenderer::Render()
     this->LastPreparationTime = timer->GetElapsedTime();
     this->NumberOfTetrahedra = static_cast<vtkIdType>(in.Transparent.size());
     this->NumberOfDegenerateTetrahedra = degenerate;
+    this->NumberOfOverlappingTetrahedra = static_cast<vtkIdType>(in.NumberOfOverlapping);
   }
 
   if (in.Property != property || in.PropertyMTime != property->GetMTime() ||

@@ -15,7 +15,9 @@
  * Renders what a vtkUnstructuredGridVolumeMapper should show for a mesh, a volume property, a
  * camera and an image size, in double precision on the CPU, without approximation beyond
  * rounding and the stated tolerance of vtkTetRayIntegrator. Every accuracy figure of the project
- * is measured against it, so it shares no code with the GPU path and needs no mesh topology.
+ * is measured against it, so it shares no code with the GPU path and needs no mesh topology;
+ * the one thing it shares with the mesh builder is the rule that picks the scalar a property
+ * takes from an array (vtkTetScalarSelection), so that both render the same field.
  *
  * Per pixel, one ray runs from the near to the far plane through the pixel's sample position
  * (its centre by default), as docs/design.md fixes it. A bounding volume hierarchy over all
@@ -32,12 +34,15 @@
  * and integrated exactly (vtkTetRayIntegrator), then composited front to back in exact optical
  * depth. This handles non-convex meshes, cavities, cracks, overlapping cells (composited in
  * order of entry), a camera inside the mesh and degenerate cells (zero volume: skipped).
+ * Tetrahedra that overlap through a shared face (on the same side of it: a face of three
+ * tetrahedra, a cell listed twice) follow the mesh builder's rule, written again here: all but
+ * the first in input order on each side of the face are left out.
  *
  * Inputs are those of a volume mapper: a vtkDataSet (unstructured grids of tetrahedra are used
  * as they are; other 3D cells are split with vtkDataSetTriangleFilter; cells of lower dimension
  * are ignored), scalars chosen as VTK's mappers choose them (vtkAbstractMapper::GetScalars),
- * reduced to one component (VectorMode: a component, or the magnitude), a volume property
- * (first component), a camera, the image size (aspect ratio = width / height), the volume's
+ * reduced to one scalar by the mapper's rule (vtkTetScalarSelection: the colour function's
+ * VectorMode by default), a volume property (first component), a camera, the image size (aspect ratio = width / height), the volume's
  * matrix (lengths are measured in world coordinates, after it) and an optional opaque depth
  * buffer (window z in [0, 1] per pixel, 1 meaning no geometry).
  *
@@ -107,11 +112,15 @@ public:
 
   ///@{
   /**
-   * How a multi-component array becomes one scalar: vtkScalarsToColors::COMPONENT (the
-   * default; component VectorComponent) or vtkScalarsToColors::MAGNITUDE.
+   * How a multi-component array becomes one scalar, by the mapper's rule
+   * (vtkTetScalarSelection): vtkTetScalarSelection::DEFAULT (-1, the default) follows the
+   * colour transfer function's own VectorMode and VectorComponent as VTK's unstructured mappers
+   * do; vtkScalarsToColors::COMPONENT (component VectorComponent) or MAGNITUDE override it.
+   * Components the property would blend or read as dependent are refused with an error.
    */
   vtkSetMacro(VectorMode, int);
   vtkGetMacro(VectorMode, int);
+  void SetVectorModeToDefault();
   void SetVectorModeToComponent();
   void SetVectorModeToMagnitude();
   vtkSetMacro(VectorComponent, int);
@@ -202,11 +211,14 @@ public:
 
   ///@{
   /**
-   * Figures of the last Render(): tetrahedra rendered, zero-volume tetrahedra skipped, seconds
-   * spent preparing the mesh (0 when cached) and casting rays.
+   * Figures of the last Render(): tetrahedra rendered, zero-volume tetrahedra skipped,
+   * overlapping tetrahedra left out (on the same side of a shared face as an earlier one: the
+   * mesh builder's rule, docs/mesh-layout.md), seconds spent preparing the mesh (0 when cached)
+   * and casting rays.
    */
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfOverlappingTetrahedra, vtkIdType);
   vtkGetMacro(LastPreparationTime, double);
   vtkGetMacro(LastRayCastTime, double);
   ///@}
@@ -269,6 +281,7 @@ protected:
 
   vtkIdType NumberOfTetrahedra;
   vtkIdType NumberOfDegenerateTetrahedra;
+  vtkIdType NumberOfOverlappingTetrahedra = 0;
   double LastPreparationTime;
   double LastRayCastTime;
 

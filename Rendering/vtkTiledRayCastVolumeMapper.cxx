@@ -10,6 +10,11 @@
 =========================================================================*/
 #include "vtkTiledRayCastVolumeMapper.h"
 
+#include "vtkAlgorithm.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataObjectTree.h"
+#include "vtkInformation.h"
+#include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTiledRayCastStatistics.h"
@@ -29,6 +34,40 @@ vtkTiledRayCastVolumeMapper::~vtkTiledRayCastVolumeMapper()
 {
   this->Statistics->Delete();
   this->ValidationReport->Delete();
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  this->Superclass::FillInputPortInformation(port, info);
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObjectTree");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeMapper::SetInputData(vtkDataObjectTree* input)
+{
+  this->SetInputDataInternal(0, input);
+}
+
+//------------------------------------------------------------------------------
+double* vtkTiledRayCastVolumeMapper::GetBounds()
+{
+  vtkCompositeDataSet* tree = this->GetNumberOfInputConnections(0) > 0
+    ? vtkCompositeDataSet::SafeDownCast(this->GetInputDataObject(0, 0))
+    : nullptr;
+  if (!tree)
+  {
+    return this->Superclass::GetBounds();
+  }
+  this->Update();
+  tree = vtkCompositeDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
+  vtkMath::UninitializeBounds(this->Bounds);
+  if (tree)
+  {
+    tree->GetBounds(this->Bounds);
+  }
+  return this->Bounds;
 }
 
 //------------------------------------------------------------------------------
@@ -86,7 +125,9 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
-  os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
+  os << indent << "VectorMode: "
+     << (this->VectorMode == DEFAULT ? "Default"
+                                     : (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component"))
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";

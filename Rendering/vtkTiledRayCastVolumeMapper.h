@@ -12,7 +12,8 @@
  * @class   vtkTiledRayCastVolumeMapper
  * @brief   GPU volume rendering of tetrahedral meshes: tiled ray casting with depth peeling
  *
- * A drop-in vtkUnstructuredGridVolumeMapper that renders a vtkUnstructuredGrid on the GPU inside
+ * A drop-in vtkUnstructuredGridVolumeMapper that renders a vtkUnstructuredGrid (or a composite
+ * data set of them, see SetInputData(vtkDataObjectTree*)) on the GPU inside
  * VTK's own render window, after Bernardon, Pagot, Comba and Silva, "GPU-based Tiled Ray Casting
  * using Depth Peeling" (2004), on today's OpenGL:
  *
@@ -33,7 +34,7 @@
  * The optical model is that of vtkUnstructuredGridPartialPreIntegration: the opacity transfer
  * function divided by the scalar opacity unit distance is an attenuation coefficient per world
  * unit, the colour is emitted in proportion to it; see docs/design.md. Only the first component
- * of the volume property is used.
+ * of the volume property is used, on one scalar per point or cell (see VectorMode).
  *
  * After each render, GetStatistics() tells what was done (pipeline, rays, tetrahedra per ray,
  * layers, tiles skipped, rays terminated early, GPU time per phase, GPU memory held) and
@@ -49,6 +50,7 @@
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeMapper.h"
 
+class vtkDataObjectTree;
 class vtkRenderWindow;
 class vtkTetMeshValidationReport;
 class vtkTiledRayCastStatistics;
@@ -249,17 +251,25 @@ public:
 
   ///@{
   /**
-   * How a scalar array of several components is reduced to the one scalar that is rendered:
-   * one component (VectorComponent) or the magnitude, as in vtkScalarsToColors. Defaults:
-   * COMPONENT, component 0.
+   * How a scalar array of several components is reduced to the one scalar that is rendered
+   * (vtkTetScalarSelection has the rule; the exact reference renderer follows the same).
+   * DEFAULT (the default) is VTK 9.1's rule for unstructured grids (vtkProjectedTetrahedraMapper):
+   * the colour transfer function's own vtkScalarsToColors::VectorMode and VectorComponent
+   * (`property->GetRGBTransferFunction()->SetVectorComponent(1)`), component 0 with a gray
+   * function. MAGNITUDE or COMPONENT (with VectorComponent) set here override the colour
+   * function. Several components are never blended: dependent components
+   * (IndependentComponentsOff with more than one component) and transfer functions set for
+   * components other than the first are refused with an error, and nothing is drawn.
    */
   enum VectorModes
   {
+    DEFAULT = -1,
     MAGNITUDE = 0,
     COMPONENT = 1
   };
-  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
+  vtkSetClampMacro(VectorMode, int, DEFAULT, COMPONENT);
   vtkGetMacro(VectorMode, int);
+  void SetVectorModeToDefault() { this->SetVectorMode(DEFAULT); }
   void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
   void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
   vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
@@ -291,12 +301,31 @@ public:
   vtkBooleanMacro(SynchronousStatistics, bool);
   ///@}
 
+  ///@{
+  /**
+   * Composite input. Besides a vtkUnstructuredGridBase, the input may be any vtkDataObjectTree
+   * (vtkMultiBlockDataSet, vtkPartitionedDataSet, vtkPartitionedDataSetCollection) of
+   * unstructured grids: `mapper->SetInputConnection(multiblockReader->GetOutputPort())` or
+   * SetInputData(tree). Its blocks are merged into one mesh and rendered in one traversal, each
+   * block's scalars selected on their own (by name with SelectScalarArray(name)), through the
+   * one volume property; points of different blocks with the same coordinates and scalar are
+   * merged, so that blocks sharing faces render as one mesh (vtkTetMeshBlockMerger). Empty
+   * blocks are skipped (counted in the validation report); a block of another type (image or
+   * polygonal data) is an error, and nothing is drawn.
+   */
+  using Superclass::SetInputData;
+  virtual void SetInputData(vtkDataObjectTree* input);
+  double* GetBounds() override;
+  using Superclass::GetBounds;
+  ///@}
+
   /**
    * Whether this mapper can render in `window` (a window already rendered once, so that its
    * OpenGL context exists) with its present settings: the context has what the chosen Pipeline
    * needs (OpenGL 3.3 or 3.2 with GL_ARB_explicit_attrib_location for the fragment pipeline and
    * the automatic choice, 4.3 for the compute pipeline) and the blend mode is composite. The
-   * property is not consulted (any vtkVolumeProperty renders; may be null). VTK's name and
+   * property is not consulted (may be null): whether it suits the input's scalars (several
+   * components, see VectorMode) is known only with the input, and refused at Render(). VTK's name and
    * signature, as on vtkGPUVolumeRayCastMapper; 0 in this abstract class, the OpenGL
    * implementation answers.
    */
@@ -316,6 +345,9 @@ protected:
   vtkTiledRayCastVolumeMapper();
   ~vtkTiledRayCastVolumeMapper() override;
 
+  // vtkUnstructuredGridBase or vtkDataObjectTree.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
   int IntegrationMode = PARTIAL_PRE_INTEGRATION;
   int MeshLayout = COMPACT_LAYOUT;
   bool SpatialOrdering = true;
@@ -325,7 +357,7 @@ protected:
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
   int MaximumNumberOfPassesPerLayer = 1000000;
-  int VectorMode = COMPONENT;
+  int VectorMode = DEFAULT;
   int VectorComponent = 0;
   vtkIdType MaximumTextureBufferSize = 0;
   int MaximumTextureSize = 0;

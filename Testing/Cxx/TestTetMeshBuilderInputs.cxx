@@ -523,15 +523,30 @@ int TestNonManifold()
   TRC_CHECK(mesh->GetReport()->GetUsable());
   TRC_CHECK(mesh->GetReport()->GetNumberOfNonManifoldFaces() == 1);
   TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
-  // One pair across the face, the third face left on the boundary: 12 - 2 faces.
-  TRC_CHECK(mesh->GetNumberOfBoundaryFaces() == 10);
-  // The pair is made of tetrahedra on opposite sides: the one below and one above.
+  // The two above overlap: the later one in input order (2, apex G) is left out
+  // (vtkTetMeshOverlapRule): no neighbours, no boundary faces. Tetrahedra 0 and 1 are
+  // neighbours across ABC, and their 3 + 3 other faces are the boundary.
+  TRC_CHECK(mesh->GetReport()->GetNumberOfOverlappingTetrahedra() == 1);
+  TRC_CHECK(mesh->GetNumberOfBoundaryFaces() == 6);
+  TRC_CHECK(mesh->GetTetFlags(2) & vtkTetMesh::Overlapping);
+  TRC_CHECK(!(mesh->GetTetFlags(0) & vtkTetMesh::Overlapping));
   vtkIdType below = -1;
   for (int face = 0; face < 4; ++face)
   {
     below = std::max(below, mesh->GetNeighborTet(1, face));
+    TRC_CHECK(mesh->GetNeighborTet(2, face) < 0);
   }
-  TRC_CHECK(below == 0 || below == 2);
+  TRC_CHECK(below == 0);
+
+  // A cell listed twice: every face of the copy lies on the same side as the original's, so
+  // the copy is left out and the original keeps its neighbour.
+  AddCell(grid, VTK_TETRA, { 0, 1, 2, 4 });
+  grid->Modified();
+  mesh = builder.Build(grid);
+  TRC_CHECK(mesh->GetReport()->GetNumberOfOverlappingTetrahedra() == 2);
+  TRC_CHECK(mesh->GetTetFlags(3) & vtkTetMesh::Overlapping);
+  TRC_CHECK(mesh->GetNumberOfBoundaryFaces() == 6);
+  TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
   return EXIT_SUCCESS;
 }
 

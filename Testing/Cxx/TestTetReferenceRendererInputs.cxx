@@ -373,6 +373,7 @@ int TestTetReferenceRendererInputs(int, char*[])
     byVector->DoublePrecisionOutputOn();
     byVector->SetScalarModeToUsePointFieldData();
     byVector->SelectScalarArray("V");
+    byVector->SetVectorModeToComponent(); // the default follows the colour function (component 0)
     byVector->SetVectorComponent(1);
     TRC_CHECK(byVector->Render());
     TRC_CHECK(Difference(byVector->GetOutput(), byPoints->GetOutput()) <= 1e-14);

@@ -67,7 +67,7 @@ inline Triangle SortedFace(vtkTetMesh* mesh, vtkIdType t, int face)
 
 // t's neighbour across i is n through j <=> n's neighbour across j is t through i, and the two
 // faces have the same three points. Also: the boundary list holds exactly the faces without a
-// neighbour, in increasing order.
+// neighbour (of tetrahedra not left out), in increasing order.
 inline std::string CheckNeighbors(vtkTetMesh* mesh)
 {
   std::ostringstream error;
@@ -82,7 +82,11 @@ inline std::string CheckNeighbors(vtkTetMesh* mesh)
       const uint32_t self = static_cast<uint32_t>((t << 2) | i);
       if (word == vtkTetMesh::NoNeighbor)
       {
-        boundary.push_back(self);
+        // A tetrahedron left out (overlapping) has no boundary face either.
+        if (!(mesh->GetTetFlags()[t] & vtkTetMesh::Overlapping))
+        {
+          boundary.push_back(self);
+        }
         continue;
       }
       const vtkIdType n = word >> 2;

@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -167,9 +168,12 @@ struct Bounds
 // Renders the exact reference of what `volume` shows in `renderer` (same camera, viewport size,
 // volume matrix, opaque depth from the window's depth buffer and background), reads the window's
 // pixels and compares. Prints the figures; returns false when a bound is exceeded. The window
-// must have been rendered.
+// must have been rendered. `configure`, when given, changes the reference's settings (its input,
+// scalar selection) after they were copied from the mapper: for checks against an independent
+// statement of what should be drawn.
 inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer, vtkVolume* volume,
-  const Bounds& bounds, const char* label = "image")
+  const Bounds& bounds, const char* label = "image",
+  const std::function<void(vtkTetReferenceRenderer*)>& configure = nullptr)
 {
   auto* mapper = vtkTiledRayCastVolumeMapper::SafeDownCast(volume->GetMapper());
   if (!mapper)
@@ -213,6 +217,10 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   reference->SetImageSize(width, height);
   reference->SetVolume(volume);
   reference->SetOpaqueDepth(depth);
+  if (configure)
+  {
+    configure(reference);
+  }
   if (!reference->Render())
   {
     std::cerr << label << ": the reference renderer failed\n";

@@ -9,7 +9,12 @@ import sys
 import unittest
 
 from vtkmodules.vtkCommonCore import vtkFloatArray, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction
+from vtkmodules.vtkCommonDataModel import (
+    vtkImageData,
+    vtkPiecewiseFunction,
+    vtkUnstructuredGrid,
+)
+from vtkmodules.vtkFiltersGeneral import vtkMultiBlockDataGroupFilter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkRenderingCore import (
     vtkColorTransferFunction,
@@ -111,6 +116,55 @@ class TestTiledRayCastPython(unittest.TestCase):
         print("ours vs exact reference (1/255): RMSE %.3f, max %d" % (rmse, max(diffs)))
         self.assertLessEqual(rmse, 0.75)
         self.assertLessEqual(max(diffs), 2)
+
+    def test_composite_input_through_a_pipeline(self):
+        """A multiblock from a pipeline (a reader's output port would do the same): rendered
+        in one traversal, camera reset from the mapper's bounds, equal to the grid's image."""
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
+        reader.Update()
+        grid = reader.GetOutput()
+        group = vtkMultiBlockDataGroupFilter()
+        group.AddInputConnection(reader.GetOutputPort())
+        group.AddInputData(vtkUnstructuredGrid())  # an empty block, skipped
+        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(lo, 0.05)
+        opacity.AddPoint(hi, 0.6)
+        color = vtkColorTransferFunction()
+        color.AddRGBPoint(lo, 0.1, 0.3, 1.0)
+        color.AddRGBPoint(hi, 1.0, 0.2, 0.1)
+        prop = vtkVolumeProperty()
+        prop.SetColor(color)
+        prop.SetScalarOpacity(opacity)
+        prop.SetScalarOpacityUnitDistance(0.1 * grid.GetLength())
+        images = []
+        for connect in (lambda m: m.SetInputConnection(group.GetOutputPort()),
+                        lambda m: m.SetInputData(grid)):
+            mapper = vtkTiledRayCastVolumeMapper()
+            connect(mapper)
+            volume = vtkVolume()
+            volume.SetMapper(mapper)
+            volume.SetProperty(prop)
+            renderer = vtkRenderer()
+            renderer.AddVolume(volume)
+            window = vtkRenderWindow()
+            window.SetOffScreenRendering(1)
+            window.SetMultiSamples(0)
+            window.SetSize(64, 64)
+            window.AddRenderer(renderer)
+            renderer.ResetCamera()
+            window.Render()
+            self.assertTrue(mapper.GetStatistics().GetRendered())
+            pixels = vtkUnsignedCharArray()
+            window.GetPixelData(0, 0, 63, 63, 0, pixels, 0)
+            images.append([pixels.GetValue(i) for i in range(pixels.GetNumberOfValues())])
+            if len(images) == 1:
+                report = mapper.GetValidationReport()
+                self.assertEqual(report.GetNumberOfBlocks(), 2)
+                self.assertEqual(report.GetNumberOfEmptyBlocks(), 1)
+        self.assertEqual(images[0], images[1])
+        self.assertGreater(max(images[0]), 0)
 
 
 if __name__ == "__main__":

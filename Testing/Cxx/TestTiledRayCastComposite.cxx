@@ -1,0 +1,303 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastComposite.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Composite input (vtkTetMeshBlockMerger): a block of tetrahedra cut in two unstructured grids
+// (interface points duplicated, each block with its own arrays, the scalars selected by name),
+// rendered as a vtkMultiBlockDataSet given with SetInputData, through a pipeline
+// (vtkMultiBlockDataGroupFilter -> SetInputConnection, the camera reset from the mapper's
+// bounds), as a vtkPartitionedDataSetCollection, with empty and null blocks, with scalars that
+// jump across the interface (no shared points: crack faces) and with cell scalars. Each image is
+// compared with the exact reference rendering the blocks appended into one grid by VTK
+// (vtkAppendFilter, points not merged). A block of image data is refused with an error and
+// nothing drawn. Before: every composite input was refused by the pipeline (vtkUnstructuredGridBase
+// required).
+#include "TiledRayCastTestScene.h"
+
+#include "vtkAppendFilter.h"
+#include "vtkCellData.h"
+#include "vtkCellTypeSource.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkImageData.h"
+#include "vtkMultiBlockDataGroupFilter.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
+#include "vtkPointData.h"
+#include "vtkPointDataToCellData.h"
+#include "vtkPoints.h"
+#include "vtkTetMeshValidationReport.h"
+
+#include <functional>
+#include <vector>
+
+namespace
+{
+using trctest::Expect;
+using trctest::MessageCounter;
+
+// A 4x4x4 block of tetrahedra over [0, 4]^3 cut at x = 2 into two grids; point scalars
+// "s" = x + 2y + 3z (+ `jump` in the second block), after an unrelated array in the second block
+// so that the scalars are found by name, not by index.
+void TwoBlocks(double jump, vtkSmartPointer<vtkUnstructuredGrid> blocks[2])
+{
+  vtkNew<vtkCellTypeSource> source;
+  source->SetCellType(VTK_TETRA);
+  source->SetBlocksDimensions(4, 4, 4);
+  source->Update();
+  vtkUnstructuredGrid* whole = source->GetOutput();
+  vtkNew<vtkIdList> cells[2];
+  for (vtkIdType c = 0; c < whole->GetNumberOfCells(); ++c)
+  {
+    double bounds[6];
+    whole->GetCellBounds(c, bounds);
+    cells[bounds[0] + bounds[1] < 4.0 ? 0 : 1]->InsertNextId(c);
+  }
+  for (int b = 0; b < 2; ++b)
+  {
+    // The cells of the half, with their own points (the interface points in both halves).
+    blocks[b] = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    vtkNew<vtkPoints> points;
+    std::vector<vtkIdType> map(whole->GetNumberOfPoints(), -1);
+    for (vtkIdType k = 0; k < cells[b]->GetNumberOfIds(); ++k)
+    {
+      vtkNew<vtkIdList> ids;
+      whole->GetCellPoints(cells[b]->GetId(k), ids);
+      for (vtkIdType j = 0; j < ids->GetNumberOfIds(); ++j)
+      {
+        vtkIdType& id = map[ids->GetId(j)];
+        if (id < 0)
+        {
+          id = points->InsertNextPoint(whole->GetPoint(ids->GetId(j)));
+        }
+        ids->SetId(j, id);
+      }
+      blocks[b]->InsertNextCell(VTK_TETRA, ids);
+    }
+    blocks[b]->SetPoints(points);
+    if (b == 1)
+    {
+      vtkNew<vtkDoubleArray> other;
+      other->SetName("other");
+      other->SetNumberOfTuples(blocks[b]->GetNumberOfPoints());
+      other->FillValue(7.0);
+      blocks[b]->GetPointData()->AddArray(other);
+    }
+    vtkNew<vtkDoubleArray> s;
+    s->SetName("s");
+    for (vtkIdType i = 0; i < blocks[b]->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      blocks[b]->GetPoint(i, p);
+      s->InsertNextValue(p[0] + 2 * p[1] + 3 * p[2] + (b == 1 ? jump : 0.0));
+    }
+    blocks[b]->GetPointData()->AddArray(s);
+  }
+}
+
+// The blocks appended by VTK, points not merged: what the reference renders.
+vtkSmartPointer<vtkUnstructuredGrid> Appended(vtkSmartPointer<vtkUnstructuredGrid> blocks[2])
+{
+  vtkNew<vtkAppendFilter> append;
+  append->MergePointsOff();
+  append->AddInputData(blocks[0]);
+  append->AddInputData(blocks[1]);
+  append->Update();
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->ShallowCopy(append->GetOutput());
+  return grid;
+}
+
+// A mapper set up by `connect` (input and scalar selection), in a window; renders two views and
+// compares each with the reference of `reference`. Checks the block counts of the report.
+bool Check(const std::string& label, vtkUnstructuredGrid* reference,
+  const std::function<void(vtkTiledRayCastVolumeMapper*)>& connect, vtkIdType blocks,
+  vtkIdType empty, bool shared)
+{
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  connect(mapper);
+  vtkNew<MessageCounter> errors;
+  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(trctest::MakeProperty(0, 24, 2.0));
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(90, 90);
+  window->AddRenderer(renderer);
+  bool ok = true;
+  const double views[2][2] = { { 30, 20 }, { 100, -35 } };
+  for (int v = 0; v < 2; ++v)
+  {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->SetPosition(0, -1, 0);
+    camera->SetFocalPoint(0, 0, 0);
+    camera->SetViewUp(0, 0, 1);
+    camera->Azimuth(views[v][0]);
+    camera->Elevation(views[v][1]);
+    camera->OrthogonalizeViewUp();
+    renderer->ResetCamera(); // from the mapper's bounds: the composite input's
+    window->Render();
+    const std::string name = label + ", view " + std::to_string(v);
+    ok = Expect(errors->Count == 0, name + ": no error (" + errors->Text + ")") && ok;
+    ok = Expect(mapper->GetStatistics()->GetRendered(), name + ": rendered") && ok;
+    ok = trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), name.c_str(),
+           [reference](vtkTetReferenceRenderer* r) { r->SetInputData(reference); }) &&
+      ok;
+  }
+  vtkTetMeshValidationReport* report = mapper->GetValidationReport();
+  std::cout << label << ": " << report->GetSummary() << "\n";
+  ok = Expect(report->GetNumberOfBlocks() == blocks && report->GetNumberOfEmptyBlocks() == empty,
+         label + ": blocks counted") &&
+    ok;
+  ok = Expect((report->GetNumberOfSharedPoints() > 0) == shared, label + ": shared points") && ok;
+  ok = Expect((report->GetNumberOfCrackFaces() == 0) == shared,
+         label + ": crack faces only where the scalars jump") &&
+    ok;
+  return ok;
+}
+
+// Points selected by name, as for each block.
+void ByName(vtkTiledRayCastVolumeMapper* mapper, const char* name, bool cells = false)
+{
+  if (cells)
+  {
+    mapper->SetScalarModeToUseCellFieldData();
+  }
+  else
+  {
+    mapper->SetScalarModeToUsePointFieldData();
+  }
+  mapper->SelectScalarArray(name);
+}
+}
+
+int TestTiledRayCastComposite(int, char*[])
+{
+  bool ok = true;
+  vtkSmartPointer<vtkUnstructuredGrid> blocks[2];
+  TwoBlocks(0.0, blocks);
+  auto appended = Appended(blocks);
+
+  vtkNew<vtkMultiBlockDataSet> multiblock;
+  multiblock->SetNumberOfBlocks(2);
+  multiblock->SetBlock(0, blocks[0]);
+  multiblock->SetBlock(1, blocks[1]);
+  ok = Check("multiblock", appended,
+         [&](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetInputData(multiblock);
+           ByName(m, "s");
+         },
+         2, 0, true) &&
+    ok;
+
+  // Through a pipeline: what a reader's output port gives.
+  vtkNew<vtkMultiBlockDataGroupFilter> group;
+  group->AddInputData(blocks[0]);
+  group->AddInputData(blocks[1]);
+  ok = Check("pipeline", appended,
+         [&](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetInputConnection(group->GetOutputPort());
+           ByName(m, "s");
+         },
+         2, 0, true) &&
+    ok;
+
+  // Partitions, with an empty grid and a null partition.
+  vtkNew<vtkPartitionedDataSet> partitions;
+  partitions->SetPartition(0, blocks[0]);
+  vtkNew<vtkUnstructuredGrid> empty;
+  partitions->SetPartition(1, empty);
+  partitions->SetPartition(2, nullptr);
+  partitions->SetPartition(3, blocks[1]);
+  vtkNew<vtkPartitionedDataSetCollection> collection;
+  collection->SetPartitionedDataSet(0, partitions);
+  ok = Check("partitioned collection with empty blocks", appended,
+         [&](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetInputData(collection);
+           ByName(m, "s");
+         },
+         4, 2, true) &&
+    ok;
+
+  // Scalars that jump across the interface: its points stay distinct (crack faces).
+  vtkSmartPointer<vtkUnstructuredGrid> jumping[2];
+  TwoBlocks(3.0, jumping);
+  vtkNew<vtkMultiBlockDataSet> jumpBlocks;
+  jumpBlocks->SetBlock(0, jumping[0]);
+  jumpBlocks->SetBlock(1, jumping[1]);
+  ok = Check("scalars jumping across blocks", Appended(jumping),
+         [&](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetInputData(jumpBlocks);
+           ByName(m, "s");
+         },
+         2, 0, false) &&
+    ok;
+
+  // Cell scalars, per block.
+  vtkSmartPointer<vtkUnstructuredGrid> cellBlocks[2];
+  vtkNew<vtkMultiBlockDataSet> cellTree;
+  for (int b = 0; b < 2; ++b)
+  {
+    vtkNew<vtkPointDataToCellData> toCells;
+    toCells->SetInputData(blocks[b]);
+    toCells->Update();
+    cellBlocks[b] = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    cellBlocks[b]->ShallowCopy(toCells->GetOutput());
+    cellTree->SetBlock(b, cellBlocks[b]);
+  }
+  ok = Check("cell scalars", Appended(cellBlocks),
+         [&](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetInputData(cellTree);
+           ByName(m, "s", true);
+         },
+         2, 0, true) &&
+    ok;
+
+  // A block that is not an unstructured grid: an error, nothing drawn.
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(3, 3, 3);
+    vtkNew<vtkMultiBlockDataSet> mixed;
+    mixed->SetBlock(0, blocks[0]);
+    mixed->SetBlock(1, image);
+    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+    mapper->SetInputData(mixed);
+    ByName(mapper, "s");
+    vtkNew<MessageCounter> errors;
+    mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(trctest::MakeProperty(0, 24, 2.0));
+    vtkNew<vtkRenderer> renderer;
+    renderer->AddVolume(volume);
+    vtkNew<vtkRenderWindow> window;
+    window->SetSize(40, 40);
+    window->AddRenderer(renderer);
+    renderer->ResetCamera();
+    window->Render();
+    window->Render();
+    ok = Expect(errors->Count == 1, "image block: one error (got " + errors->Text + ")") && ok;
+    ok = Expect(errors->Text.find("block 1 is a vtkImageData") != std::string::npos,
+           "image block: the error names it") &&
+      ok;
+    ok = Expect(!mapper->GetStatistics()->GetRendered(), "image block: nothing drawn") && ok;
+    std::cout << "image block: " << errors->Text << "\n";
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
