@@ -7,6 +7,8 @@
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
 # "pipelines" our two pipelines only, each at its default.
+# On the GPU, 20 views a turn (18 degrees apart): an interactive rotation. At 10 (36 degrees) every
+# frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 kind="${1:?cpu, gpu, pipelines, defaults or ladder}"
@@ -35,9 +37,9 @@ case "$kind" in
     # Every mapper at 1024² (the floor scene, three meshes); torus_1m at 2048² with our two
     # pipelines and the projected tetrahedra.
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-    "$bench" --size 1024 --frames 10 --csv "$out/results.csv" "$meshes/box5_tets.vtu" \
+    "$bench" --size 1024 --frames 20 --csv "$out/results.csv" "$meshes/box5_tets.vtu" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --pt-only --no-reference --size 2048 --frames 10 \
+    "$bench" --sweep pipelines --pt-only --no-reference --size 2048 --frames 20 \
       --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
@@ -46,10 +48,10 @@ case "$kind" in
     # Our two pipelines only, each at its default, on the GPU meshes at 1024² and torus_1m at
     # 2048²: the quick check of the compute pipeline's speed, phase by phase.
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-    "$bench" --sweep pipelines --no-others --size 1024 --frames 10 --csv "$out/results.csv" \
+    "$bench" --sweep pipelines --no-others --size 1024 --frames 20 --csv "$out/results.csv" \
       "$meshes/box5_tets.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 10 \
+    "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 20 \
       --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
@@ -58,7 +60,7 @@ case "$kind" in
     # The study behind the mapper's defaults: tile size, tets per pass, occlusion-query interval
     # (ours only), on the GPU meshes and the comb, whose rays re-enter up to six times.
     "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-    "$bench" --sweep defaults --size "${TRC_DEFAULTS_SIZE:-1024}" --frames 10 --csv "$out/defaults.csv" \
+    "$bench" --sweep defaults --size "${TRC_DEFAULTS_SIZE:-1024}" --frames 20 --csv "$out/defaults.csv" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
@@ -76,7 +78,7 @@ case "$kind" in
         *_10m.vtu|*_30m.vtu) others=--no-others ;;
         *) others=--pt-only ;;
       esac
-      "$bench" --sweep pipelines $others --no-reference --size 1024 --frames 10 \
+      "$bench" --sweep pipelines $others --no-reference --size 1024 --frames 20 \
         --csv "$out/ladder.csv" "$f"
       rm -f "$f"
     done

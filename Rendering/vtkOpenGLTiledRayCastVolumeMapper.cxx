@@ -2182,8 +2182,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     vtkWarningMacro(<< incomplete
                     << " rays of a recent frame missed boundary layers: the view asked for "
                     << stats->GetNumberOfEntries()
-                    << " ray entries, far more than the frames before it, and three rounds of "
-                       "the entry list did not hold them. The list has grown to fit; turn "
+                    << " ray entries, far more than the frames before it, and the entry list "
+                       "did not hold them. The list has grown to fit; turn "
                        "SynchronousStatistics on to verify every frame.");
   }
   // Per pixel: the compute pipeline's targets and the scene depth (4 B); or two sets of state,

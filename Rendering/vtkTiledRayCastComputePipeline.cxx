@@ -25,7 +25,6 @@
 #include "vtkTiledRayCastBoundaryFaceVS.h"
 #include "vtkTiledRayCastCompositeFS.h"
 #include "vtkTiledRayCastEntryList.h"
-#include "vtkTiledRayCastEntryRoundCS.h"
 #include "vtkTiledRayCastNearSliceFS.h"
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
@@ -49,16 +48,6 @@ const unsigned int RayCountsBinding = 2;
 const vtkIdType WordsPerEntry = 3;
 const int GroupWidth = 8;
 const int GroupHeight = 4;
-// Rounds of the entry list in one frame, all queued every frame (the rounds not needed draw
-// and dispatch nothing): the list, sized from earlier frames, lists the pixels that did not
-// fit again in the second and the third.
-const int EntryRounds = 3;
-// Byte offsets of trcEntryCountBuffer (vtkTiledRayCastEntryList.glsl): the count, then the
-// indirect commands of the next round.
-const size_t FaceDrawOffset = 4;
-const size_t SliceDrawOffset = 20;
-const size_t GroupsOffset = 36;
-const size_t EntryCountBytes = 48;
 
 // The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
 enum RayCount
@@ -72,9 +61,8 @@ enum RayCount
   CountMaximumSteps,
   CountStopped,
   CountEmptyGroups,
-  CountEntriesAsked,
-  CountEntryRounds,
   CountIncomplete,
+  CountEntriesAsked, // copied from the entry count after the traversal
   NumberOfRayCounts
 };
 
@@ -163,18 +151,13 @@ bool vtkTiledRayCastComputePipeline::UpdatePrograms(
   {
     return false;
   }
-  for (auto* compute : { &this->Traversal, &this->EntryRound })
+  vtkTiledRayCastComputeShader* shader = this->Traversal;
+  const std::string source = Substituted(vtkTiledRayCastTraversalCS, replacements);
+  if ((source != shader->GetSource() || !shader->GetHandle()) && !shader->Build(source))
   {
-    vtkTiledRayCastComputeShader* shader = *compute;
-    const std::string source = Substituted(
-      compute == &this->Traversal ? vtkTiledRayCastTraversalCS : vtkTiledRayCastEntryRoundCS,
-      replacements);
-    if ((source != shader->GetSource() || !shader->GetHandle()) && !shader->Build(source))
-    {
-      error = "A compute shader of the tiled ray caster failed to build (" + shader->GetError() +
-        "). Nothing is drawn.";
-      return false;
-    }
+    error = "The compute shader of the tiled ray caster failed to build (" + shader->GetError() +
+      "). Nothing is drawn.";
+    return false;
   }
   return true;
 }
@@ -222,7 +205,7 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   // One entry per pixel to start with; the list grows to what views need (ListEntries).
   ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
-  ok = ok && this->EntryCount.Allocate(EntryCountBytes);
+  ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t));
   for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
   {
     ok = ok && counts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
@@ -327,12 +310,12 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   this->CountsBuffer = next;
 
   // A frame is verified (its counts read before Render() returns, the list grown and the
-  // frame drawn again if the rounds did not suffice) when asked, and when nothing is known
-  // yet of what this mesh asks for at this image size.
-  // A camera jump too: the bounds cover a quarter more of the view than in the last frame, or
-  // the view turned by more than 30 degrees (more boundary layers may face it). Frames of a
-  // camera that moves (interaction, animation) are not verified: their entry counts change
-  // by little from one frame to the next, which the list's headroom and the rounds absorb.
+  // frame drawn again if it did not hold the view) when asked, when nothing is known yet of
+  // what this mesh asks for at this image size, and on a camera jump: the bounds cover a
+  // quarter more of the view than in the last frame, or the view turned by more than 30
+  // degrees (more boundary layers may face it). Frames of a camera that moves (interaction,
+  // animation) are not verified: their entry counts change by little from one frame to the
+  // next, which the list's headroom absorbs.
   const float* d = frame.ViewDirection;
   const float turn = d[0] * this->LastDirection[0] + d[1] * this->LastDirection[1] +
     d[2] * this->LastDirection[2];
@@ -346,7 +329,7 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   this->LastCoverage = frame.BoundsCoverage;
   // A quarter to spare over what the latest view counted asked for (GrowEntries adds another),
   // and room for its mean entries per ray at every pixel, up to two (24 B a pixel): a camera
-  // that comes closer then needs no second round for meshes of one or two boundary layers.
+  // that comes closer then finds room for meshes of one or two boundary layers.
   const double perRay = this->RaysCounted > 0
     ? std::min(2.0, static_cast<double>(this->EntriesAsked) / this->RaysCounted)
     : 0.0;
@@ -359,14 +342,6 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
 void vtkTiledRayCastComputePipeline::ListEntries(
   const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
-  this->EntryCount.Write(0, sizeof(std::uint32_t));
-  this->DrawEntries(frame, setup, 1);
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::DrawEntries(
-  const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round)
-{
   vtkOpenGLRenderWindow* window = frame.Window;
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLShaderCache* cache = window->GetShaderCache();
@@ -377,11 +352,8 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
 
+  this->EntryCount.Write(0, sizeof(std::uint32_t));
   this->BindBuffers();
-  if (round > 1)
-  {
-    this->EntryCount.BindIndirect();
-  }
   const int capacity = static_cast<int>(this->EntryCapacity);
   if (frame.NearPlaneCutsMesh)
   {
@@ -392,16 +364,8 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
     setup.SetFrameUniforms(p);
     setup.SetMeshUniforms(p);
     p->SetUniformi("in_entryCapacity", capacity);
-    p->SetUniformi("in_entryRound", round);
     this->NearSliceProgram.VAO->Bind();
-    if (round == 1)
-    {
-      glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
-    }
-    else
-    {
-      vtkTiledRayCastComputeShader::DrawArraysIndirect(GL_POINTS, SliceDrawOffset);
-    }
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
   }
   // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
   state->vtkglEnable(GL_CULL_FACE);
@@ -412,18 +376,9 @@ void vtkTiledRayCastComputePipeline::DrawEntries(
   setup.SetMeshUniforms(p);
   setup.SetCoverageUniforms(p);
   p->SetUniformi("in_entryCapacity", capacity);
-  p->SetUniformi("in_entryRound", round);
   this->FacesProgram.VAO->Bind();
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  if (round == 1)
-  {
-    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
-  }
-  else
-  {
-    vtkTiledRayCastComputeShader::DrawArraysIndirect(GL_TRIANGLES, FaceDrawOffset);
-    vtkTiledRayCastStorageBuffer::UnbindIndirect();
-  }
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
@@ -435,26 +390,6 @@ void vtkTiledRayCastComputePipeline::Traverse(const Frame& frame, vtkTiledRayCas
 {
   vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
   counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
-  for (int round = 1; round <= EntryRounds; ++round)
-  {
-    if (round > 1)
-    {
-      this->DrawEntries(frame, setup, round);
-    }
-    this->Dispatch(frame, setup, round);
-    if (round < EntryRounds)
-    {
-      this->DecideNextRound(frame, round);
-    }
-  }
-  counts.MarkWritten();
-  this->CountsPending[this->CountsBuffer] = true;
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::Dispatch(
-  const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round)
-{
   vtkTiledRayCastComputeShader* traversal = this->Traversal;
   traversal->Use(frame.Window);
   setup.SetFrameUniforms(traversal);
@@ -464,44 +399,18 @@ void vtkTiledRayCastComputePipeline::Dispatch(
   traversal->SetUniform2i("in_imageSize", size);
   traversal->SetUniformi("in_maximumSteps", frame.MaximumSteps);
   traversal->SetUniformf("in_peelEpsilon", frame.PeelEpsilon);
-  traversal->SetUniformi("in_entryRound", round);
-  traversal->SetUniformi("in_lastRound", round == EntryRounds ? 1 : 0);
   this->BindBuffers();
-  if (round == 1)
-  {
-    traversal->Dispatch(
-      (frame.Width + GroupWidth - 1) / GroupWidth, (frame.Height + GroupHeight - 1) / GroupHeight);
-  }
-  else
-  {
-    this->EntryCount.BindIndirect();
-    traversal->DispatchIndirect(GroupsOffset);
-    vtkTiledRayCastStorageBuffer::UnbindIndirect();
-  }
+  traversal->Dispatch(
+    (frame.Width + GroupWidth - 1) / GroupWidth, (frame.Height + GroupHeight - 1) / GroupHeight);
   vtkTiledRayCastComputeShader::Barrier(GL_TEXTURE_FETCH_BARRIER_BIT |
     GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
     GL_SHADER_STORAGE_BARRIER_BIT);
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::DecideNextRound(const Frame& frame, int round)
-{
-  vtkTiledRayCastComputeShader* decide = this->EntryRound;
-  decide->Use(frame.Window);
-  decide->SetUniformi("in_entryRound", round);
-  decide->SetUniformi("in_entryCapacity", static_cast<int>(this->EntryCapacity));
-  decide->SetUniformi("in_faceVertices", static_cast<int>(3 * frame.NumberOfBoundaryFaces));
-  decide->SetUniformi(
-    "in_sliceVertices", frame.NearPlaneCutsMesh ? static_cast<int>(frame.NumberOfTetrahedra) : 0);
-  const int groups[2] = { (frame.Width + GroupWidth - 1) / GroupWidth,
-    (frame.Height + GroupHeight - 1) / GroupHeight };
-  decide->SetUniform2i("in_groups", groups);
-  this->EntryCount.BindBase(EntryCountBinding);
-  this->RayCounts[this->CountsBuffer].BindBase(RayCountsBinding);
-  decide->Dispatch(1, 1);
-  vtkTiledRayCastComputeShader::Barrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  // The entry count goes with the frame's counts (read with them, without waiting).
+  this->EntryCount.CopyTo(counts, 0, CountEntriesAsked * sizeof(std::uint32_t), sizeof(std::uint32_t));
+  counts.MarkWritten();
+  this->CountsPending[this->CountsBuffer] = true;
 }
 
 //------------------------------------------------------------------------------
@@ -515,8 +424,8 @@ bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
   this->ReadCounts(stats);
   if (this->RaysIncomplete > 0)
   {
-    // Three rounds did not list this view (the first frame of a mesh, or a view that asks for
-    // far more than the last): grow to what it asked for and draw it again, in one round.
+    // The list did not hold this view (the first frame of a mesh, or a camera jump): grow to
+    // what it asked for and draw it again.
     if (!this->GrowEntries(this->EntriesAsked, error))
     {
       return false;
@@ -571,7 +480,6 @@ void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastS
   stats->SetMaximumStepsPerRay(counts[CountMaximumSteps]);
   stats->SetNumberOfTilesSkipped(static_cast<int>(counts[CountEmptyGroups]));
   stats->SetNumberOfEntries(counts[CountEntriesAsked]);
-  stats->SetNumberOfEntryRounds(1 + static_cast<int>(counts[CountEntryRounds]));
   stats->SetNumberOfIncompleteRays(counts[CountIncomplete]);
   this->RaysStopped = counts[CountStopped];
   this->RaysIncomplete = counts[CountIncomplete];
@@ -597,7 +505,6 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
     p->Key.clear();
   }
   this->Traversal->ReleaseProgram();
-  this->EntryRound->ReleaseProgram();
   this->EntryHeads->ReleaseGraphicsResources(window);
   this->Color->ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);

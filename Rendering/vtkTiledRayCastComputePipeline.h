@@ -26,16 +26,14 @@
  *    same peeling rules as the fragment pipeline. The ray state stays in registers; the colour
  *    is written once (RGBA16); the list heads are reset for the next frame as they are read, so
  *    nothing is cleared. The GPU counts rays, steps, layers and terminations per workgroup.
- *    Entry rounds: the list is sized from the counts of earlier frames (BeginFrame), never
- *    from this frame's, so Render() does not wait for the GPU. Where this view asks for more,
- *    the GPU lists again, in a second and a third round, the pixels whose entries did not fit
- *    (vtkTiledRayCastEntryList.glsl, vtkTiledRayCastEntryRoundCS.glsl: indirect draws and
- *    dispatches, queued every frame, empty when not needed).
+ *    The list is sized from the counts of earlier frames (BeginFrame), never from this
+ *    frame's, so Render() does not wait for the GPU; an entry that finds it full marks its
+ *    pixel, whose ray is then counted as incomplete.
  * 3. FinishEntries, on verified frames only (SynchronousStatistics, the first frame of a mesh
- *    or image size): waits for the frame's counts and, if three rounds did not hold the view,
- *    grows the list and draws the frame again. On other frames such rays (a view asking for
- *    several times the entries of the frame before) miss layers, are counted, and the mapper
- *    warns; the list has grown by the next frame.
+ *    or image size, a camera jump): waits for the frame's counts and, if rays were
+ *    incomplete, grows the list and draws the frame again. On other frames such rays (a
+ *    moving view asking for far more entries than the frames before) miss layers, are
+ *    counted, and the mapper warns; the list has grown by the next frame.
  * 4. Composite: one light full-screen pass blends the colour into VTK's framebuffer.
  *
  * The counts of a frame are read without waiting during a later frame (double-buffered, with
@@ -135,21 +133,20 @@ public:
   bool BeginFrame(const Frame& frame, vtkTiledRayCastStatistics* stats, std::string& error);
 
   /**
-   * Phase 1, the first round of the entry list, into the pipeline's own framebuffer (the
-   * caller has pushed the framebuffer bindings and set the viewport to the image).
+   * Phase 1, the entry list, into the pipeline's own framebuffer (the caller has pushed the
+   * framebuffer bindings and set the viewport to the image).
    */
   void ListEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
 
   /**
-   * Phase 2: the traversal dispatch, then the later rounds of the entry list and their
-   * dispatches, decided on the GPU (no-ops unless the list lost entries).
+   * Phase 2: the traversal dispatch.
    */
   void Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
 
   /**
    * Phase 3, on verified frames only (else it returns at once): waits for the frame's counts
-   * and, if rays remained incomplete after the rounds, grows the list to what the view asked
-   * for and draws the frame again. False with a message when the list cannot grow.
+   * and, if rays were incomplete (the list lost entries), grows the list to what the view
+   * asked for and draws the frame again. False with a message when the list cannot grow.
    */
   bool FinishEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
     vtkTiledRayCastStatistics* stats, std::string& error);
@@ -171,7 +168,7 @@ public:
   vtkIdType GetNumberOfRaysStopped() const { return this->RaysStopped; }
 
   /**
-   * Rays of the counts read since the last call that missed entries after every round (a view
+   * Rays of the counts read since the last call whose lists lost entries (a moving view
    * asking for far more entries than the frames before it; never on a verified frame): the
    * mapper warns.
    */
@@ -213,16 +210,13 @@ private:
     const std::string& fs, const std::string& gs, std::string& error);
   void BindBuffers();
   bool GrowEntries(vtkIdType needed, std::string& error);
-  void DrawEntries(const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round);
-  void Dispatch(const Frame& frame, vtkTiledRayCastProgramSetup& setup, int round);
-  void DecideNextRound(const Frame& frame, int round);
+
   void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
 
   RasterProgram FacesProgram;
   RasterProgram NearSliceProgram;
   RasterProgram CompositeProgram;
   vtkNew<vtkTiledRayCastComputeShader> Traversal;
-  vtkNew<vtkTiledRayCastComputeShader> EntryRound;
 
   vtkNew<vtkTextureObject> EntryHeads;
   vtkNew<vtkTextureObject> Color;

@@ -99,18 +99,6 @@ void vtkTiledRayCastComputeShader::Dispatch(unsigned int groupsX, unsigned int g
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputeShader::DispatchIndirect(size_t offset)
-{
-  glDispatchComputeIndirect(static_cast<GLintptr>(offset));
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastComputeShader::DrawArraysIndirect(unsigned int mode, size_t offset)
-{
-  glDrawArraysIndirect(mode, reinterpret_cast<const void*>(offset));
-}
-
-//------------------------------------------------------------------------------
 bool vtkTiledRayCastComputeShader::SetDepthClamp(bool on)
 {
   const bool was = glIsEnabled(GL_DEPTH_CLAMP) == GL_TRUE;

@@ -28,8 +28,7 @@
 
 #include "vtkShaderProgram.h"
 
-#include <cstddef> // For size_t
-#include <string>  // For std::string
+#include <string> // For std::string
 
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
@@ -69,12 +68,6 @@ public:
   void Dispatch(unsigned int groupsX, unsigned int groupsY);
 
   /**
-   * Run the workgroups that the bound indirect buffer holds at byte `offset`
-   * (vtkTiledRayCastStorageBuffer::BindIndirect).
-   */
-  void DispatchIndirect(size_t offset);
-
-  /**
    * Delete the GL program (the context must be current).
    */
   void ReleaseProgram();
@@ -92,11 +85,6 @@ public:
   static void Barrier(unsigned int bits);
   ///@}
 
-  /**
-   * glDrawArraysIndirect: draw what the bound indirect buffer holds at byte `offset` (the
-   * current program's vertex array bound).
-   */
-  static void DrawArraysIndirect(unsigned int mode, size_t offset);
 
   /**
    * Turn GL_DEPTH_CLAMP on or off (vtkOpenGLState does not track it), returning whether it was

@@ -45,7 +45,6 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfOcclusionQueries = 0;
   this->NumberOfRaysTerminatedEarly = 0;
   this->NumberOfEntries = 0;
-  this->NumberOfEntryRounds = 0;
   this->NumberOfIncompleteRays = 0;
   this->NumberOfSteps = 0;
   this->MaximumStepsPerRay = 0;
@@ -94,13 +93,12 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
   if (compute)
   {
     text << " (" << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay
-         << "), " << this->NumberOfEntries << " entries (" << this->NumberOfEntryRounds
-         << (this->NumberOfEntryRounds == 1 ? " round" : " rounds");
+         << "), " << this->NumberOfEntries << " entries";
     if (this->NumberOfIncompleteRays > 0)
     {
-      text << ", " << this->NumberOfIncompleteRays << " rays incomplete";
+      text << " (" << this->NumberOfIncompleteRays << " rays incomplete)";
     }
-    text << "), " << this->NumberOfLayers << " layers, "
+    text << ", " << this->NumberOfLayers << " layers, "
          << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped << " empty)";
   }
   else
@@ -145,7 +143,6 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfRaysTerminatedEarly: " << this->NumberOfRaysTerminatedEarly << "\n";
   os << indent << "Pipeline: " << (this->Pipeline ? this->Pipeline : "(none)") << "\n";
   os << indent << "NumberOfEntries: " << this->NumberOfEntries << "\n";
-  os << indent << "NumberOfEntryRounds: " << this->NumberOfEntryRounds << "\n";
   os << indent << "NumberOfIncompleteRays: " << this->NumberOfIncompleteRays << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "MaximumStepsPerRay: " << this->MaximumStepsPerRay << "\n";

@@ -129,16 +129,12 @@ public:
 
   ///@{
   /**
-   * Compute pipeline: the entry list is sized from earlier frames, and a view that asks for
-   * more is listed again in rounds on the GPU (the pixels that did not fit; at most
-   * three rounds in all). NumberOfEntryRounds is the rounds that ran (1 when the list held
-   * every entry); NumberOfIncompleteRays the rays of the last round whose list still had lost
-   * entries (they miss boundary layers: the mapper warns and the list grows for the next frame;
-   * 0 whenever the frame was verified: SynchronousStatistics, the first frame of a mesh or
-   * image size).
+   * Compute pipeline: rays whose entry list lost entries, so that they missed boundary layers.
+   * The list is sized from earlier frames (Render() never waits for this frame's count); a
+   * frame it did not hold is drawn again at once when the frame is verified
+   * (SynchronousStatistics, the first frame of a mesh or image size, a camera jump), so this is
+   * 0 then; on other frames the mapper warns and the list grows for the next frame.
    */
-  vtkSetMacro(NumberOfEntryRounds, int);
-  vtkGetMacro(NumberOfEntryRounds, int);
   vtkSetMacro(NumberOfIncompleteRays, vtkIdType);
   vtkGetMacro(NumberOfIncompleteRays, vtkIdType);
   ///@}
@@ -276,7 +272,6 @@ protected:
   vtkIdType NumberOfRaysTerminatedEarly = 0;
   char* Pipeline = nullptr;
   vtkIdType NumberOfEntries = 0;
-  int NumberOfEntryRounds = 0;
   vtkIdType NumberOfIncompleteRays = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;

@@ -44,17 +44,15 @@ void vtkTiledRayCastStorageBuffer::BindBase(unsigned int index) const
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastStorageBuffer::BindIndirect() const
+void vtkTiledRayCastStorageBuffer::CopyTo(vtkTiledRayCastStorageBuffer& destination, size_t offset,
+  size_t destinationOffset, size_t bytes) const
 {
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, this->Handle);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, this->Handle);
-}
-
-//------------------------------------------------------------------------------
-void vtkTiledRayCastStorageBuffer::UnbindIndirect()
-{
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glBindBuffer(GL_COPY_READ_BUFFER, this->Handle);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, destination.Handle);
+  glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset),
+    static_cast<GLintptr>(destinationOffset), static_cast<GLsizeiptr>(bytes));
+  glBindBuffer(GL_COPY_READ_BUFFER, 0);
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
 }
 
 //------------------------------------------------------------------------------

@@ -43,13 +43,12 @@ public:
    */
   void BindBase(unsigned int index) const;
 
-  ///@{
   /**
-   * Bind as the buffer of indirect draws and dispatches (both targets), and unbind both.
+   * Copy `bytes` bytes at `offset` into `destination` at `destinationOffset`, on the GPU
+   * (issue a buffer-update barrier first if shaders wrote them).
    */
-  void BindIndirect() const;
-  static void UnbindIndirect();
-  ///@}
+  void CopyTo(vtkTiledRayCastStorageBuffer& destination, size_t offset, size_t destinationOffset,
+    size_t bytes) const;
 
   /**
    * Write `bytes` bytes at `offset` (zeros when data is null).

@@ -12,11 +12,10 @@
 // frame starts from empty lists without a clear.
 //
 // The list holds in_entryCapacity nodes, sized by the CPU from the entries of
-// earlier frames (it never waits for this frame's). Where a view asks for
-// more, the GPU sorts it out in rounds: an entry that finds the list full sets
-// its pixel's LOST bit; the traversal leaves such pixels PENDING (and walks
-// all the others); the list is emptied and drawn again for the pending pixels
-// only (indirect draws and dispatches, no-ops when nothing is pending).
+// earlier frames (it never waits for this frame's). An entry that finds the
+// list full sets its pixel's LOST bit: the traversal walks what the list holds
+// and counts the ray as incomplete, and the mapper draws the frame again
+// (verified frames) or warns.
 //============================================================================
 layout(binding = 0, r32ui) uniform coherent uimage2D in_entryHeads;
 layout(std430, binding = 0) buffer trcEntryNodeBuffer
@@ -25,40 +24,25 @@ layout(std430, binding = 0) buffer trcEntryNodeBuffer
 };
 layout(std430, binding = 1) buffer trcEntryCountBuffer
 {
-  // Entries asked for in this round (only the first in_entryCapacity are stored), then the
-  // commands of the next round, which vtkTiledRayCastEntryRoundCS.glsl writes.
+  // Entries asked for in this frame: all that the view has; only the first
+  // in_entryCapacity are stored.
   uint trcEntryCount;
-  uint trcNextFaceDraw[4];  // glDrawArraysIndirect: count, instances, first, base instance
-  uint trcNextSliceDraw[4]; // the same for the near-plane slices
-  uint trcNextGroups[3];    // glDispatchComputeIndirect: workgroups x, y, z
 };
 uniform int in_entryCapacity;
-// 1 for the first round (every pixel), above for the rounds of pending pixels.
-uniform int in_entryRound;
 
 const uint TRC_NEAR_PLANE_ENTRY = 0x80000000u; // in a node's link
-const uint TRC_ENTRY_PENDING = 0x80000000u;    // in a head: the pixel waits for this round
-const uint TRC_ENTRY_LOST = 0x40000000u;       // in a head: an entry found the list full
-const uint TRC_ENTRY_NODE = 0x3FFFFFFFu;       // in a head or link: the node's index + 1
+const uint TRC_ENTRY_LOST = 0x80000000u;       // in a head: an entry found the list full
+const uint TRC_ENTRY_NODE = 0x7FFFFFFFu;       // in a head or link: the node's index + 1
 
 void trcAppendEntry(ivec2 pixel, float lambda, uint key, bool nearPlane)
 {
-  uint round = 0u;
-  if (in_entryRound > 1)
-  {
-    if ((imageLoad(in_entryHeads, pixel).r & TRC_ENTRY_PENDING) == 0u)
-    {
-      return; // this pixel's ray has been walked in an earlier round
-    }
-    round = TRC_ENTRY_PENDING;
-  }
   uint node = atomicAdd(trcEntryCount, 1u);
   if (node >= uint(in_entryCapacity))
   {
     imageAtomicOr(in_entryHeads, pixel, TRC_ENTRY_LOST);
     return;
   }
-  uint next = imageAtomicExchange(in_entryHeads, pixel, (node + 1u) | round);
+  uint next = imageAtomicExchange(in_entryHeads, pixel, node + 1u);
   if ((next & TRC_ENTRY_LOST) != 0u)
   {
     // The exchange wrote over a LOST bit: set it again (every exchange that removes it sets

@@ -10,10 +10,8 @@
 // both pipelines enter the same layers. The ray state lives in registers from
 // the first entry to the last step; the colour is written once.
 //
-// Rounds (vtkTiledRayCastEntryList.glsl): a pixel whose list lost entries is
-// left PENDING for the next round, unless this is the last round, which walks
-// what the list holds and counts the ray as incomplete. Later rounds skip the
-// pixels of earlier ones.
+// A pixel whose list lost entries (vtkTiledRayCastEntryList.glsl) walks what
+// the list holds and is counted as incomplete.
 //============================================================================
 //TRC::Common::Dec
 //TRC::Layout::Dec
@@ -28,7 +26,6 @@ uniform ivec2 in_imageSize;
 // The most steps one ray may take in one layer (more than any ray can need).
 uniform int in_maximumSteps;
 uniform float in_peelEpsilon;
-uniform bool in_lastRound;
 
 // What the frame did, for the mapper's statistics (read by the CPU one frame later, or at once
 // with SynchronousStatistics).
@@ -42,10 +39,8 @@ layout(std430, binding = 2) buffer trcRayCountBuffer
   uint trcStepsHigh;
   uint trcMaximumSteps;
   uint trcRaysStopped; // rays that reached in_maximumSteps in one layer
-  uint trcEmptyGroups; // workgroups (8x4 tiles) with no ray, in the first round
-  uint trcEntriesAsked; // entries of the first round: all that the view has
-  uint trcEntryRounds;  // rounds beyond the first that ran (vtkTiledRayCastEntryRoundCS.glsl)
-  uint trcRaysIncomplete; // rays of the last round whose lists had lost entries
+  uint trcEmptyGroups; // workgroups (8x4 tiles) with no ray
+  uint trcRaysIncomplete; // rays whose lists had lost entries
 };
 
 shared uint trcGroupRays;
@@ -123,14 +118,11 @@ void main()
   ivec2 pixel = ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
-  // A pixel of this round: any in the first, the pending ones after.
-  bool inRound = inImage && (in_entryRound == 1 || (word & TRC_ENTRY_PENDING) != 0u);
   bool lost = (word & TRC_ENTRY_LOST) != 0u;
-  bool deferred = inRound && lost && !in_lastRound;
-  uint head = inRound && !deferred ? word & TRC_ENTRY_NODE : 0u;
-  if (inRound && word != 0u)
+  uint head = word & TRC_ENTRY_NODE;
+  if (word != 0u)
   {
-    imageStore(in_entryHeads, pixel, uvec4(deferred ? TRC_ENTRY_PENDING : 0u));
+    imageStore(in_entryHeads, pixel, uvec4(0u));
   }
   vec4 color = vec4(0.0);
   int steps = 0;
@@ -188,13 +180,13 @@ void main()
       atomicAdd(trcGroupIncomplete, 1u);
     }
   }
-  if (inRound && !deferred)
+  if (inImage)
   {
     imageStore(in_colorImage, pixel, color);
   }
 
   barrier();
-  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u && in_entryRound == 1)
+  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u)
   {
     atomicAdd(trcEmptyGroups, 1u);
   }

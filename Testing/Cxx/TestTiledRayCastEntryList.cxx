@@ -1,7 +1,7 @@
 /*=========================================================================
 
   Program:   TiledRayCast
-  Module:    TestTiledRayCastEntryRounds.cxx
+  Module:    TestTiledRayCastEntryList.cxx
 
   Copyright (c) the TiledRayCast authors
   All rights reserved.
@@ -9,11 +9,10 @@
 
 =========================================================================*/
 // The compute pipeline's entry list without a CPU wait: Render() does not read back how many
-// entries a view asked for. The list is sized from earlier frames; a view that asks for more
-// is listed again on the GPU in rounds (the pixels that did not fit), and a frame that even
-// three rounds cannot list is either drawn again at once (verified frames: the first of a mesh
-// or image size, or with SynchronousStatistics) or drawn with layers missing and a warning,
-// the list grown for the next frame. Each case checked against the exact reference:
+// entries a view asked for. The list is sized from earlier frames; a frame it does not hold is
+// either drawn again at once (verified frames: the first of a mesh or image size, a camera
+// jump, or with SynchronousStatistics) or drawn with layers missing and a warning, the list
+// grown for the next frame. Each case checked against the exact reference:
 //   1. the comb from the front, far (two layers), then across its six teeth, close: a camera
 //      jump, so a verified frame: exact, no warning; then a camera that moves in small steps
 //      from the front to across the teeth, coming closer: no ray incomplete, exact;
@@ -31,18 +30,16 @@
 #include "vtkTesting.h"
 #include "vtkTiledRayCastStatistics.h"
 
-#include <algorithm>
 #include <cmath>
 
 namespace
 {
 using trctest::Expect;
 
-// The rounds, entries and incomplete rays of the frame the counts describe.
+// The entries and incomplete rays of the frame the counts describe.
 void Print(const char* label, vtkTiledRayCastStatistics* stats)
 {
   std::cout << label << ": " << stats->GetNumberOfEntries() << " entries, "
-            << stats->GetNumberOfEntryRounds() << " rounds, "
             << stats->GetNumberOfIncompleteRays() << " incomplete rays\n";
 }
 
@@ -63,8 +60,8 @@ bool CombRounds(int argc, char* argv[])
   scene.Window->Render(); // verified: the list is sized from this view
   Print("comb, front, far", scene.Mapper->GetStatistics());
 
-  // A camera jump: across the teeth, close. The frame is verified (drawn again if the rounds
-  // do not hold it): exact, no warning.
+  // A camera jump: across the teeth, close, twice the entries the list holds. The frame is
+  // verified (drawn again since the list did not hold it): exact, no warning.
   camera->Azimuth(90);
   camera->Zoom(16);
   scene.Renderer->ResetCameraClippingRange();
@@ -73,14 +70,13 @@ bool CombRounds(int argc, char* argv[])
   Print("comb across, close", scene.Mapper->GetStatistics());
 
   // A camera that moves: back to the front and across again in 10-degree steps, coming closer,
-  // SynchronousStatistics off. The list follows the counts of earlier frames, the rounds
-  // absorb the rest: the last frame is exact and nothing was incomplete.
+  // SynchronousStatistics off. The list follows the counts of earlier frames with room to
+  // spare: the last frame is exact and nothing was incomplete.
   camera->Azimuth(-90);
   camera->Zoom(1.0 / 3.0);
   scene.Renderer->ResetCameraClippingRange();
   scene.Window->Render();
   vtkIdType incomplete = 0;
-  int rounds = 0;
   for (int step = 0; step < 9; ++step)
   {
     camera->Azimuth(10);
@@ -88,13 +84,11 @@ bool CombRounds(int argc, char* argv[])
     scene.Renderer->ResetCameraClippingRange();
     scene.Window->Render();
     incomplete += scene.Mapper->GetStatistics()->GetNumberOfIncompleteRays();
-    rounds = std::max(rounds, scene.Mapper->GetStatistics()->GetNumberOfEntryRounds());
   }
   ok = trctest::CheckAgainstReference(
          scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "comb, camera moved") &&
     ok;
-  std::cout << "comb, camera moved: at most " << rounds << " rounds, " << incomplete
-            << " incomplete rays\n";
+  std::cout << "comb, camera moved: " << incomplete << " incomplete rays\n";
   ok = Expect(incomplete == 0 && scene.Warnings->Count == 0, "no ray incomplete, no warning") &&
     ok;
   return ok;
@@ -127,7 +121,7 @@ vtkSmartPointer<vtkUnstructuredGrid> SlabStack(int slabs)
 }
 
 // A camera turning by 25 degrees (no jump) from nearly edge-on (one or two slabs per ray) to
-// where rays cross several slabs: more entries than the list and its rounds hold on some GPUs.
+// where rays cross several slabs: three times the entries, more than the list holds.
 // Never silent: a frame with incomplete rays is followed by one warning, and the next frames
 // are exact. With SynchronousStatistics the frame itself is exact.
 bool SlabOverflow(bool synchronous)
@@ -183,14 +177,13 @@ bool SlabOverflow(bool synchronous)
   scene.Window->Render();
   vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
   Print(label, stats);
-  ok = Expect(stats->GetNumberOfEntryRounds() == 1 && stats->GetNumberOfIncompleteRays() == 0,
-         "the grown list holds the view in one round") &&
+  ok = Expect(stats->GetNumberOfIncompleteRays() == 0, "the grown list holds the view") &&
     ok;
   return ok;
 }
 }
 
-int TestTiledRayCastEntryRounds(int argc, char* argv[])
+int TestTiledRayCastEntryList(int argc, char* argv[])
 {
   {
     // Skip where the compute pipeline cannot run (OpenGL < 4.3).
