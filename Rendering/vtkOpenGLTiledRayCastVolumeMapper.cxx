@@ -83,6 +83,16 @@
 #include <string>
 #include <vector>
 
+// vtkOpenGLCheckErrorMacro (compiled where NDEBUG is not defined) reports with vtkErrorMacro,
+// which needs a vtkObject's `this`: the internals report through their mapper.
+#if defined(VTK_REPORT_OPENGL_ERRORS)
+#define vtkInternalsErrorMacro(x) vtkErrorWithObjectMacro(this->Self, x)
+#define vtkInternalsCheckErrorMacro(message)                                                       \
+  vtkOpenGLCheckErrorMacroImpl(vtkInternalsErrorMacro, message)
+#else
+#define vtkInternalsCheckErrorMacro(message)
+#endif
+
 vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
 
 namespace
@@ -564,7 +574,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   stats->SetNumberOfRayCastPasses(1);
   stats->GetPassesPerTile().clear();
   stats->FinishTilePasses();
-  vtkOpenGLCheckErrorMacro("failed after the compute pipeline");
+  vtkInternalsCheckErrorMacro("failed after the compute pipeline");
   return true;
 }
 
@@ -1559,7 +1569,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
   this->SetCoverageUniforms(this->FirstHitProgram.Shader);
   this->FirstHitProgram.VAO->Bind();
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
-  vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
+  vtkInternalsCheckErrorMacro("failed after the first-hit pass");
   return true;
 }
 
@@ -1600,7 +1610,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   {
     tile.Parity = 1;
   }
-  vtkOpenGLCheckErrorMacro("failed after a peeling pass");
+  vtkInternalsCheckErrorMacro("failed after a peeling pass");
   return reentered;
 }
 
@@ -1827,7 +1837,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
 
   stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
   stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
-  vtkOpenGLCheckErrorMacro("failed after compositing");
+  vtkInternalsCheckErrorMacro("failed after compositing");
 }
 
 //------------------------------------------------------------------------------
