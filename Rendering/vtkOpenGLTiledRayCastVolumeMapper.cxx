@@ -288,6 +288,14 @@ public:
     this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
     this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
     this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
+    // The builder's progress is the mapper's (0 to 0.9, packing the layout the rest), so that
+    // an application can show it for a mesh that takes seconds to build.
+    this->BuildProgress->SetClientData(self);
+    this->BuildProgress->SetCallback([](vtkObject*, unsigned long, void* mapper, void* fraction) {
+      static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper)->UpdateProgress(
+        0.9 * *static_cast<double*>(fraction));
+    });
+    this->Builder->AddObserver(vtkCommand::ProgressEvent, this->BuildProgress);
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
@@ -308,6 +316,7 @@ public:
 
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
+  vtkNew<vtkCallbackCommand> BuildProgress;
   vtkNew<vtkTetMeshBuilder> Builder;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
   int LayoutKind = -1;
@@ -710,6 +719,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(vtkDataSet* inp
   }
   timer->StopTimer();
   self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
+  if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
+  {
+    self->UpdateProgress(1.0);
+  }
 
   if (mesh->GetMTime() != this->MeshTime)
   {

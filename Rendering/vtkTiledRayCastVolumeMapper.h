@@ -41,6 +41,11 @@
  * draws nothing (bad input, or no input at all, which vtkVolume does not even hand to Render())
  * leaves GetStatistics()->GetRendered() false.
  *
+ * Progress: while a render (re)builds the CPU mesh (the first render, and whenever the input
+ * changed), the mapper invokes vtkCommand::ProgressEvent as any vtkAlgorithm does
+ * (GetProgress() from 0 to 0.9 while the mesh is built, 1 once it is packed for the GPU); a
+ * frame that rebuilds nothing invokes none.
+ *
  * This class is abstract: New() returns the OpenGL implementation through VTK's object factory
  * (vtkOpenGLTiledRayCastVolumeMapper), as for VTK's own volume mappers.
  */
