@@ -74,6 +74,8 @@ EXTENSIONS = {
 # Image sizes: the scalar bar and the caption need some room; 16384 is the largest render
 # target llvmpipe (and most GPUs) allocate.
 MIN_SIZE, MAX_SIZE = 64, 16384
+# Below this size the scalar bar and the caption would cover the volume: they are left out.
+OVERLAY_SIZE = 256
 BACKGROUND = (0.08, 0.08, 0.11)
 HISTOGRAM_BINS = 256
 MAX_HISTOGRAM_CELLS = 250000
@@ -389,7 +391,8 @@ def parse_arguments(argv):
                         help="a mesh file: " + ", ".join(sorted(EXTENSIONS)))
     parser.add_argument("--output", default="tiledraycast.png", help="PNG file to write")
     parser.add_argument("--size", type=integer_in(MIN_SIZE, MAX_SIZE, "--size"), default=512,
-                        help=f"image width and height in pixels ({MIN_SIZE} to {MAX_SIZE})")
+                        help=f"image width and height in pixels ({MIN_SIZE} to {MAX_SIZE}; "
+                             f"the scalar bar and the caption from {OVERLAY_SIZE} up)")
     parser.add_argument("--array", default=None,
                         help="point or cell array to render (default: the active scalars, "
                              "else the first array; point data first)")
@@ -470,7 +473,9 @@ def render(grid, association, array, args):
     title = array.GetName() or "scalars"
     if array.GetNumberOfComponents() > 1:
         title += " (magnitude)"
-    caption = add_overlays(renderer, color, title, args.size)
+    caption = None
+    if args.size >= OVERLAY_SIZE:
+        caption = add_overlays(renderer, color, title, args.size)
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
     window.SetSize(args.size, args.size)
@@ -481,6 +486,8 @@ def render(grid, association, array, args):
         window.Render()
         seconds.append(time.perf_counter() - start)
     stats = mapper.GetStatistics()
+    if caption is None:
+        return window, mapper, seconds
     caption.SetInput(
         f"{os.path.basename(args.mesh)}\n"
         f"{mapper.GetValidationReport().GetNumberOfTetrahedra():,} tetrahedra, "

@@ -66,11 +66,12 @@ class TestRenderMeshScript(unittest.TestCase):
         writer.SetFileTypeToBinary()
         self.assertEqual(writer.Write(), 1)
         output = self.path("legacy.png")
-        code, out, err = run(mesh, "--size", "96", "--output", output)
+        # 256 px: the smallest size with the scalar bar and the caption.
+        code, out, err = run(mesh, "--size", "256", "--output", output)
         self.assertEqual(code, 0, err)
         self.assertIn("VTK legacy data set", out)
         self.assertIn("(point data)", out)
-        self.assertEqual(png_size(output), (96, 96))
+        self.assertEqual(png_size(output), (256, 256))
 
     def test_cell_array(self):
         to_cells = vtkPointDataToCellData()
