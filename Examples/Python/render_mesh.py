@@ -278,12 +278,12 @@ def volume_histogram(grid, association, array):
     part = vtkUnstructuredGrid()
     part.CopyStructure(grid)
     if association == "point":
-        part.GetPointData().AddArray(array)
+        part.GetPointData().SetScalars(array)  # as scalars: the array may have no name
         to_cells = vtkPointDataToCellData()
         to_cells.SetInputData(part)
         source = to_cells.GetOutputPort()
     else:
-        part.GetCellData().AddArray(array)
+        part.GetCellData().SetScalars(array)
         source = None
     sizes = vtkCellSizeFilter()
     if source is not None:
@@ -295,7 +295,7 @@ def volume_histogram(grid, association, array):
     sizes.ComputeAreaOff()
     sizes.Update()
     cells = sizes.GetOutput().GetCellData()
-    values, volumes = cells.GetArray(array.GetName()), cells.GetArray("Volume")
+    values, volumes = cells.GetScalars(), cells.GetArray("Volume")
     bins = [0.0] * HISTOGRAM_BINS
     count = values.GetNumberOfTuples()
     scale = HISTOGRAM_BINS / (high - low)
