@@ -1,7 +1,11 @@
 # The two commands of the README. Both install missing Debian packages, configure and build.
 #   make demo   render a tetrahedral mesh to a PNG and print what was done
 #   make test   run the whole test suite under ctest
-.PHONY: demo test build install clean
+# Developer targets:
+#   make build      configure and build ./build only
+#   make sanitize   build ./build-asan with ASan and UBSan and run the tests under them
+#   make install PREFIX=...
+.PHONY: demo test build sanitize install clean
 
 build:
 	Module/build.sh
@@ -12,10 +16,14 @@ demo:
 test:
 	Module/test.sh
 
+# make sanitize ARGS="-R Python" runs only some tests (ARGS go to ctest).
+sanitize:
+	Module/sanitize.sh $(ARGS)
+
 # make install PREFIX=/some/where
 PREFIX ?= /usr/local
 install: build
 	cmake --install build --prefix "$(PREFIX)"
 
 clean:
-	rm -rf build
+	rm -rf build build-asan

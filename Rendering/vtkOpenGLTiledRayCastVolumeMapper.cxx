@@ -85,6 +85,16 @@
 #include <string>
 #include <vector>
 
+// vtkOpenGLCheckErrorMacro (compiled where NDEBUG is not defined) reports with vtkErrorMacro,
+// which needs a vtkObject's `this`: the internals report through their mapper.
+#if defined(VTK_REPORT_OPENGL_ERRORS)
+#define vtkInternalsErrorMacro(x) vtkErrorWithObjectMacro(this->Self, x)
+#define vtkInternalsCheckErrorMacro(message)                                                       \
+  vtkOpenGLCheckErrorMacroImpl(vtkInternalsErrorMacro, message)
+#else
+#define vtkInternalsCheckErrorMacro(message)
+#endif
+
 vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
 
 namespace
@@ -280,6 +290,14 @@ public:
     this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
     this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
     this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
+    // The builder's progress is the mapper's (0 to 0.9, packing the layout the rest), so that
+    // an application can show it for a mesh that takes seconds to build.
+    this->BuildProgress->SetClientData(self);
+    this->BuildProgress->SetCallback([](vtkObject*, unsigned long, void* mapper, void* fraction) {
+      static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper)->UpdateProgress(
+        0.9 * *static_cast<double*>(fraction));
+    });
+    this->Builder->AddObserver(vtkCommand::ProgressEvent, this->BuildProgress);
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
@@ -300,6 +318,7 @@ public:
 
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
+  vtkNew<vtkCallbackCommand> BuildProgress;
   vtkNew<vtkTetMeshBuilder> Builder;
   vtkTiledRayCastMeshInput Input;
   vtkSmartPointer<vtkTetMeshLayout> Layout;
@@ -576,7 +595,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   stats->SetNumberOfRayCastPasses(1);
   stats->GetPassesPerTile().clear();
   stats->FinishTilePasses();
-  vtkOpenGLCheckErrorMacro("failed after the compute pipeline");
+  vtkInternalsCheckErrorMacro("failed after the compute pipeline");
   return true;
 }
 
@@ -719,6 +738,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   }
   timer->StopTimer();
   self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
+  if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
+  {
+    self->UpdateProgress(1.0);
+  }
 
   if (mesh->GetMTime() != this->MeshTime)
   {
@@ -1581,7 +1604,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  vtkOpenGLCheckErrorMacro("failed after the first-hit pass");
+  vtkInternalsCheckErrorMacro("failed after the first-hit pass");
   return true;
 }
 
@@ -1624,7 +1647,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   {
     tile.Parity = 1;
   }
-  vtkOpenGLCheckErrorMacro("failed after a peeling pass");
+  vtkInternalsCheckErrorMacro("failed after a peeling pass");
   return reentered;
 }
 
@@ -1851,7 +1874,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
 
   stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
   stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
-  vtkOpenGLCheckErrorMacro("failed after compositing");
+  vtkInternalsCheckErrorMacro("failed after compositing");
 }
 
 //------------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkDataSet.h"
@@ -296,6 +297,17 @@ public:
 private:
   const char* Name;
 };
+
+//------------------------------------------------------------------------------
+// Build() reports its progress as vtkAlgorithm::UpdateProgress does: a ProgressEvent whose call
+// data is a double* fraction in [0, 1]. The fractions reached after each phase of a full build
+// follow the time each phase takes (docs/mesh-layout.md, post_tets6 and bracket): reading the
+// points and cells 10 %, orientation 20 %, face matching 55 %, duplicates and cracks 10 %,
+// scalars the rest.
+void ReportProgress(vtkObject* builder, double fraction)
+{
+  builder->InvokeEvent(vtkCommand::ProgressEvent, &fraction);
+}
 
 //------------------------------------------------------------------------------
 // Spreads the low 11 bits of v so that they occupy every third bit.
@@ -1839,6 +1851,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     return mesh;
   }
 
+  ReportProgress(this, 0.0);
   bool doFull = full;
   if (!doFull && pointsChanged)
   {
@@ -1907,6 +1920,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
         ScopedEvent event("vtkTetMeshBuilder: cells");
         ok = in.ExtractTetrahedra(input, error, numTetsFromSplit);
       }
+      ReportProgress(this, 0.1);
       const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
       if (ok && numTets == 0)
       {
@@ -1955,16 +1969,19 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
         ScopedEvent event("vtkTetMeshBuilder: orientation");
         in.OrientAndClassify(this->DegeneracyTolerance, true);
       }
+      ReportProgress(this, 0.3);
       {
         ScopedEvent event("vtkTetMeshBuilder: face matching");
         in.MatchFaces();
         in.OrientDegenerateTetrahedra();
         in.CollectBoundaryFaces();
       }
+      ReportProgress(this, 0.85);
       {
         ScopedEvent event("vtkTetMeshBuilder: duplicates and cracks");
         in.FindDuplicatesAndCracks();
       }
+      ReportProgress(this, 0.95);
     }
     in.Input = input;
     in.TopologyStamps = topology;
@@ -2011,6 +2028,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   in.ReportTo(mesh->Report, input);
   mesh->Modified();
   this->LastBuildTime = vtkTimerLog::GetUniversalTime() - start;
+  ReportProgress(this, 1.0);
   return mesh;
 }
 

@@ -28,6 +28,11 @@
  * - everything when the cells, the number of points, the input object or a topology setting
  *   (SpatialOrdering, DegeneracyTolerance) changed.
  *
+ * Progress: a Build() that rebuilds anything invokes vtkCommand::ProgressEvent, as
+ * vtkAlgorithm::UpdateProgress does (call data: a double* fraction), at 0, after each phase of a
+ * full build (weighted by the time the phase takes), and at 1 when it is done; a Build() that
+ * finds nothing changed invokes none.
+ *
  * GetLastRebuild() says what the last Build() did. Changes are detected from the modification
  * times of the arrays that hold each part (points, cell connectivity, offsets and types, the
  * selected scalar array) and from the setting values, so an array modified in place must be

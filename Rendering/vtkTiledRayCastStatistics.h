@@ -42,8 +42,10 @@ public:
 
   ///@{
   /**
-   * Whether the last Render() drew anything. False when the input could not be rendered (see
-   * the mapper's validation report and the error it printed) or nothing was visible.
+   * Whether the last frame drew anything. False when the input could not be rendered (see
+   * the mapper's validation report and the error it printed), when nothing was visible, and
+   * when the mapper had no input at all (vtkVolume then never calls its Render(): the mapper's
+   * Update(), which vtkVolume calls every frame, resets the counts).
    */
   vtkSetMacro(Rendered, bool);
   vtkGetMacro(Rendered, bool);

@@ -97,6 +97,16 @@ int vtkTiledRayCastVolumeMapper::IsRenderSupported(vtkRenderWindow*, vtkVolumePr
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeMapper::Update()
+{
+  if (!this->GetDataObjectInput())
+  {
+    this->Statistics->ResetFrameCounts();
+  }
+  this->Superclass::Update();
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeMapper::GetPipelineAsString()
 {
   switch (this->Pipeline)

@@ -38,7 +38,14 @@
  *
  * After each render, GetStatistics() tells what was done (pipeline, rays, tetrahedra per ray,
  * layers, tiles skipped, rays terminated early, GPU time per phase, GPU memory held) and
- * GetValidationReport() what the mesh builder found in the input.
+ * GetValidationReport() what the mesh builder found in the input. A frame in which the mapper
+ * draws nothing (bad input, or no input at all, which vtkVolume does not even hand to Render())
+ * leaves GetStatistics()->GetRendered() false.
+ *
+ * Progress: while a render (re)builds the CPU mesh (the first render, and whenever the input
+ * changed), the mapper invokes vtkCommand::ProgressEvent as any vtkAlgorithm does
+ * (GetProgress() from 0 to 0.9 while the mesh is built, 1 once it is packed for the GPU); a
+ * frame that rebuilds nothing invokes none.
  *
  * This class is abstract: New() returns the OpenGL implementation through VTK's object factory
  * (vtkOpenGLTiledRayCastVolumeMapper), as for VTK's own volume mappers.
@@ -335,6 +342,14 @@ public:
    * What the last Render() did. Never null.
    */
   vtkTiledRayCastStatistics* GetStatistics() { return this->Statistics; }
+
+  /**
+   * vtkVolume calls Update() on its mapper at the start of every frame and Render() only when
+   * the mapper has an input. Without an input, Update() is the frame's only call: it resets the
+   * statistics (nothing is drawn) before VTK's pipeline reports the missing input.
+   */
+  using Superclass::Update;
+  void Update() override;
 
   /**
    * What the mesh builder found in the input at the last Render() (or Update()). Never null.

@@ -12,7 +12,8 @@
 // of the scene (an opaque cone) still renders: an empty grid, a grid without scalars, a grid of
 // triangles only, a mesh larger than the texture limits, a blend mode the mapper does not do.
 // NaN scalars are not an error: the tetrahedra touching them are transparent, as the exact
-// reference renderer has them.
+// reference renderer has them. A mapper whose input is removed after a good frame says it drew
+// nothing in the next one (vtkVolume never calls its Render() without an input).
 #include "TiledRayCastTestScene.h"
 
 #include "vtkActor.h"
@@ -21,6 +22,7 @@
 #include "vtkCommand.h"
 #include "vtkConeSource.h"
 #include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
@@ -160,6 +162,24 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   ok = Refused("maximum intensity", spx, "composite",
          [](vtkTiledRayCastVolumeMapper* m) { m->SetBlendModeToMaximumIntensity(); }) &&
     ok;
+
+  // No input after a good frame: VTK's pipeline reports the missing input (on the mapper's
+  // executive) and the statistics describe the empty frame, not the last one drawn.
+  {
+    trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
+    scene.Window->Render();
+    ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "no input: the first frame renders") &&
+      ok;
+    vtkNew<MessageCounter> pipelineErrors;
+    scene.Mapper->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pipelineErrors);
+    scene.Mapper->RemoveAllInputConnections(0);
+    scene.Window->Render();
+    ok = Expect(pipelineErrors->Count > 0, "no input: the pipeline reports it") && ok;
+    ok = Expect(!scene.Mapper->GetStatistics()->GetRendered(),
+           "no input: the statistics say nothing was rendered") &&
+      ok;
+    ok = Expect(scene.Mapper->GetStatistics()->GetNumberOfRays() == 0, "no input: no rays") && ok;
+  }
 
   // NaN scalars: a warning from the builder, and the image of the exact reference (which also
   // makes the tetrahedra that touch them transparent).

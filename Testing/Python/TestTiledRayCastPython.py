@@ -2,13 +2,15 @@
 
 Renders spx_vistrails.vtu (non-convex, several boundary layers) in a headless window, checks the
 image against the exact reference renderer (RMSE <= 0.75, max <= 8 in 1/255, the bounds of the
-C++ scene tests), and reads the statistics and the validation report from Python.
+C++ scene tests), and reads the statistics and the validation report from Python. Checks the
+mapper's build progress (ProgressEvent, as any vtkAlgorithm) and that a frame without input
+leaves the statistics saying nothing was rendered.
 """
 import os
 import sys
 import unittest
 
-from vtkmodules.vtkCommonCore import vtkFloatArray, vtkUnsignedCharArray
+from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import (
     vtkImageData,
     vtkPiecewiseFunction,
@@ -165,6 +167,64 @@ class TestTiledRayCastPython(unittest.TestCase):
                 self.assertEqual(report.GetNumberOfEmptyBlocks(), 1)
         self.assertEqual(images[0], images[1])
         self.assertGreater(max(images[0]), 0)
+
+    def test_progress_and_empty_frame(self):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
+        reader.Update()
+        grid = reader.GetOutput()
+        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(lo, 0.1)
+        opacity.AddPoint(hi, 0.5)
+        prop = vtkVolumeProperty()
+        prop.SetScalarOpacity(opacity)
+        mapper = vtkTiledRayCastVolumeMapper()
+        mapper.SetInputData(grid)
+        progress = []
+        mapper.AddObserver(vtkCommand.ProgressEvent,
+                           lambda obj, event: progress.append(obj.GetProgress()))
+        volume = vtkVolume()
+        volume.SetMapper(mapper)
+        volume.SetProperty(prop)
+        renderer = vtkRenderer()
+        renderer.AddVolume(volume)
+        window = vtkRenderWindow()
+        window.SetOffScreenRendering(1)
+        window.SetSize(64, 64)
+        window.AddRenderer(renderer)
+        renderer.ResetCamera()
+
+        # The first frame builds the mesh: progress from 0 through the build's phases to 1
+        # (after the 0 and 1 of VTK's executive, which updates the mapper before its Render()).
+        window.Render()
+        self.assertTrue(mapper.GetStatistics().GetRendered())
+        print("progress of the first frame:", ", ".join("%.3f" % p for p in progress))
+        build = progress[len(progress) - 1 - progress[::-1].index(0.0):]
+        self.assertEqual(build[-1], 1.0)
+        self.assertEqual(build, sorted(build))
+        self.assertGreaterEqual(len([p for p in build if 0.0 < p < 1.0]), 4)
+        # A frame that only moves the camera rebuilds nothing, reports nothing.
+        del progress[:]
+        renderer.GetActiveCamera().Azimuth(30)
+        window.Render()
+        self.assertEqual(progress, [])
+        # New scalars: a scalars-only rebuild, 0 to 1 again.
+        grid.GetPointData().GetScalars().Modified()
+        window.Render()
+        self.assertEqual((progress[0], progress[-1]), (0.0, 1.0))
+
+        # No input: vtkVolume never calls Render(), VTK's pipeline reports the missing input,
+        # and the statistics describe that empty frame.
+        errors = []
+        mapper.GetExecutive().AddObserver(vtkCommand.ErrorEvent,
+                                          lambda obj, event: errors.append(event))
+        mapper.RemoveAllInputConnections(0)
+        window.Render()
+        self.assertTrue(errors)
+        self.assertFalse(mapper.GetStatistics().GetRendered())
+        self.assertEqual(mapper.GetStatistics().GetNumberOfRays(), 0)
+        self.assertEqual(mapper.GetStatistics().GetSummary(), "nothing rendered")
 
 
 if __name__ == "__main__":
