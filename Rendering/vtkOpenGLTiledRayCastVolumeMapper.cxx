@@ -960,6 +960,18 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
     {
       int size[3];
       table->GetSize(size);
+      if (table->GetReducedFromScalarSize() > 0)
+      {
+        // Once per build that had to give up resolution.
+        vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
+                                        << "D pre-integration table of this transfer function "
+                                           "would take more than "
+                                        << table->GetBuildTimeBudget() << " s to build at "
+                                        << table->GetReducedFromScalarSize()
+                                        << " scalar steps: it was built at " << size[0]
+                                        << ", coarser. Partial pre-integration (the default "
+                                           "integration mode) needs no table and is exact for it.");
+      }
       vtkTextureObject* tex = this->TableTexture;
       tex->ReleaseGraphicsResources(window);
       tex->SetContext(window);

@@ -14,6 +14,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkTetRayIntegrator.h"
+#include "vtkTimerLog.h"
 #include "vtkTiledRayCastTransferFunction.h"
 #include "vtkVolumeProperty.h"
 
@@ -59,7 +60,7 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
         std::min(this->RequestedLengthSize > 0 ? this->RequestedLengthSize : 64, this->MaximumSize))
     : 1;
   if (this->BuiltFrom == source && this->BuiltTime >= this->GetMTime() &&
-    std::equal(size, size + 3, this->Size) && this->Range[0] == scalarRange[0] &&
+    std::equal(size, size + 3, this->Planned) && this->Range[0] == scalarRange[0] &&
     this->Range[1] == scalarRange[1] && !this->Table.empty())
   {
     return true;
@@ -71,14 +72,22 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
     vtkErrorMacro("Cannot integrate the volume property's transfer functions.");
     return false;
   }
+  const double maxLength = this->MaximumLength;
+  const double reference = this->ReferenceLength;
+  const bool is3D = this->Dimension == 3;
+  std::copy(size, size + 3, this->Planned);
+  this->ReducedFromScalarSize = 0;
+  const int fitted = this->FitBudget(integrator, size, scalarRange);
+  if (fitted < size[0])
+  {
+    this->ReducedFromScalarSize = size[0];
+    size[0] = size[1] = fitted;
+  }
   std::copy(size, size + 3, this->Size);
   this->Range[0] = scalarRange[0];
   this->Range[1] = scalarRange[1];
   const int n = size[0];
   const int nl = size[2];
-  const double maxLength = this->MaximumLength;
-  const double reference = this->ReferenceLength;
-  const bool is3D = this->Dimension == 3;
   this->Table.assign(static_cast<size_t>(n) * n * nl * 4, 0.0f);
   float* table = this->Table.data();
   const double lo = scalarRange[0];
@@ -109,6 +118,44 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
   this->Modified();
   this->BuiltTime = this->GetMTime();
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastPreIntegrationTable::FitBudget(
+  vtkTetRayIntegrator* integrator, const int size[3], const double scalarRange[2]) const
+{
+  // Time every length of a few (front, back) pairs spread over the grid, project to the whole
+  // table on the threads the build will use, and shrink the scalar axes (their square) to fit.
+  const int n = size[0];
+  const int nl = size[2];
+  const vtkIdType pairs = static_cast<vtkIdType>(n) * n;
+  const vtkIdType samples = std::min<vtkIdType>(pairs, 48);
+  const double width = scalarRange[1] - scalarRange[0];
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  double rgba[4];
+  for (vtkIdType k = 0; k < samples; ++k)
+  {
+    // A spread of fronts and backs: (k * 7919) mod n against k * n / samples.
+    const int front = static_cast<int>((k * 7919) % n);
+    const int back = static_cast<int>(k * n / samples);
+    const double sf = scalarRange[0] + width * front / (n - 1);
+    const double sb = scalarRange[0] + width * back / (n - 1);
+    for (int l = 0; l < nl; ++l)
+    {
+      const double length =
+        this->Dimension == 3 ? this->MaximumLength * l / (nl - 1) : this->ReferenceLength;
+      integrator->Integrate(sf, sb, length, rgba);
+    }
+  }
+  timer->StopTimer();
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  const double projected = timer->GetElapsedTime() * pairs / samples / threads;
+  if (projected <= this->BuildTimeBudget || n <= 32)
+  {
+    return n;
+  }
+  return std::max(32, static_cast<int>(n * std::sqrt(this->BuildTimeBudget / projected)));
 }
 
 //------------------------------------------------------------------------------
@@ -151,6 +198,8 @@ void vtkTiledRayCastPreIntegrationTable::PrintSelf(ostream& os, vtkIndent indent
   os << indent << "ScalarRange: " << this->Range[0] << " " << this->Range[1] << "\n";
   os << indent << "MaximumLength: " << this->MaximumLength << "\n";
   os << indent << "ReferenceLength: " << this->ReferenceLength << "\n";
+  os << indent << "BuildTimeBudget: " << this->BuildTimeBudget << " s\n";
+  os << indent << "ReducedFromScalarSize: " << this->ReducedFromScalarSize << "\n";
   os << indent << "RequestedScalarSize: " << this->RequestedScalarSize << "\n";
   os << indent << "RequestedLengthSize: " << this->RequestedLengthSize << "\n";
 }

@@ -33,6 +33,7 @@
 
 #include <vector> // For std::vector
 
+class vtkTetRayIntegrator;
 class vtkTiledRayCastTransferFunction;
 class vtkVolumeProperty;
 
@@ -49,6 +50,19 @@ public:
    */
   vtkSetClampMacro(Dimension, int, 2, 3);
   vtkGetMacro(Dimension, int);
+  ///@}
+
+  ///@{
+  /**
+   * Seconds a build may take (default 5). A few entries are integrated and timed first; where
+   * the whole table would take longer (a transfer function with a feature far narrower than a
+   * table can hold, such as a 1e-6-wide opacity spike, makes every entry across it an adaptive
+   * integral), its scalar resolution is lowered to fit, never below 32, and
+   * GetReducedFromScalarSize() says from what (0 when not reduced), for the mapper to say so.
+   */
+  vtkSetClampMacro(BuildTimeBudget, double, 0.01, VTK_DOUBLE_MAX);
+  vtkGetMacro(BuildTimeBudget, double);
+  vtkGetMacro(ReducedFromScalarSize, int);
   ///@}
 
   ///@{
@@ -120,6 +134,13 @@ protected:
   int RequestedLengthSize = 0;
   int MaximumSize = 2048;
   double MaximumLength = 1.0;
+  // The scalar size whose build fits the budget (at most size[0]).
+  int FitBudget(
+    vtkTetRayIntegrator* integrator, const int size[3], const double scalarRange[2]) const;
+
+  double BuildTimeBudget = 5.0;
+  int Planned[3] = { 0, 0, 0 }; // the size before the budget, which a rebuild compares
+  int ReducedFromScalarSize = 0;
   double ReferenceLength = 1.0;
   int Size[3] = { 0, 0, 0 };
   double Range[2] = { 0, 1 };
