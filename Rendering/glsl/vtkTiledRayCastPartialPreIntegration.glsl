@@ -135,9 +135,21 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
         return;
       }
     }
+    // The last node at or below sb, which trcFindNode(sb) would find, from where the walk
+    // stopped instead of a second binary search (its dependent fetches are a good part of a
+    // step): going down, the node it stopped at; going up, the one before, or nodes equal to sb.
+    int below = i;
+    if (ds > 0.0)
+    {
+      below = i - 1;
+      while (below + 1 < in_transferFunctionNodes && trcNodeScalar(below + 1) <= sb)
+      {
+        ++below;
+      }
+    }
     vec3 cb;
     float tb;
-    trcEvaluate(sb, trcFindNode(sb), cb, tb);
+    trcEvaluate(sb, below, cb, tb);
     trcCompositePiece(cf, tf, cb, tb, d * (sb - s) / ds, color);
   }
   else
