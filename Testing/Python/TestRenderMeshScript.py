@@ -1,6 +1,8 @@
 """Examples/Python/render_mesh.py, the demo of `make demo`, run as a user runs it.
 
-Runs the script (as an executable: its shebang and mode are part of the test) on a legacy .vtk
+Runs the script (its mode and shebang are checked; it runs as an executable where the shebang's
+/usr/bin/python3 is the interpreter of this test, else through this one: the GPU bundle's own
+Python is not /usr/bin/python3) on a legacy .vtk
 file, on a .vtu whose only array is a cell array, and on an Exodus file, all written here from
 spx_vistrails.vtu; checks that each PNG exists with the asked size and that the output says which
 array was used. Bad input must fail with a message: --size 0, a negative or absurd size, an
@@ -27,9 +29,11 @@ TEMP = None
 
 
 def run(*args):
-    """Runs the script itself (not through an interpreter); returns (code, stdout, stderr)."""
+    """Runs the script as a user does; returns (code, stdout, stderr)."""
     environment = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    result = subprocess.run([SCRIPT] + list(args), capture_output=True, text=True, timeout=600,
+    shebang = os.path.realpath("/usr/bin/python3") == os.path.realpath(sys.executable)
+    command = [SCRIPT] if shebang else [sys.executable, SCRIPT]
+    result = subprocess.run(command + list(args), capture_output=True, text=True, timeout=600,
                             env=environment)
     return result.returncode, result.stdout, result.stderr
 
