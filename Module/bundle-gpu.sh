@@ -141,7 +141,7 @@ cp "$cmake_root/Modules/CMake.cmake" "$root/share/$(basename "$cmake_root")/Modu
 # --- 4. Shared libraries ------------------------------------------------------------------------
 glvnd=(libEGL.so.1 libGLdispatch.so.0 libOpenGL.so.0 libGLX.so.0 libGL.so.1)
 for name in "${glvnd[@]}"; do
-  path="$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ { print $NF; exit }')"
+  path="$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ && !found { print $NF; found = 1 }')"
   [ -n "$path" ] || die "glvnd library $name not found (install libglvnd0, libegl1, libgl1)"
   cp -L "$path" "$root/lib/$name"
 done
