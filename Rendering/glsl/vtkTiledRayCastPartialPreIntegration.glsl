@@ -47,26 +47,6 @@ int trcFindNode(float s)
   return lo;
 }
 
-// The node at or below the last segment's back scalar: the next segment starts where this one
-// ended (point scalars are continuous across faces, up to rounding), so its front node is
-// usually the same one. Checked before use (one or two fetches), never trusted; -2: none yet.
-int trcNodeHint = -2;
-
-// trcFindNode(s), starting from a guess.
-int trcFindNodeFrom(float s, int guess)
-{
-  if (guess >= -1 && guess < in_transferFunctionNodes)
-  {
-    bool fromBelow = guess < 0 || trcNodeScalar(guess) <= s;
-    bool toAbove = guess + 1 >= in_transferFunctionNodes || trcNodeScalar(guess + 1) > s;
-    if (fromBelow && toAbove)
-    {
-      return guess;
-    }
-  }
-  return trcFindNode(s);
-}
-
 void trcEvaluate(float s, int below, out vec3 c, out float tau)
 {
   if (below < 0)
@@ -121,7 +101,7 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
     // Nothing to integrate, or a tet touching a non-finite scalar: transparent.
     return;
   }
-  int node = trcFindNodeFrom(sf, trcNodeHint);
+  int node = trcFindNode(sf);
   vec3 cf;
   float tf;
   trcEvaluate(sf, node, cf, tf);
@@ -167,7 +147,6 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
         ++below;
       }
     }
-    trcNodeHint = below;
     vec3 cb;
     float tb;
     trcEvaluate(sb, below, cb, tb);
@@ -175,7 +154,6 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
   }
   else
   {
-    trcNodeHint = node;
     trcCompositePiece(cf, tf, cf, tf, d, color);
   }
 }
