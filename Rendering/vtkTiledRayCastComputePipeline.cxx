@@ -250,11 +250,11 @@ bool vtkTiledRayCastComputePipeline::GrowEntries(vtkIdType needed, std::string& 
   }
   // A quarter more than asked, so that a slowly changing view does not grow it every frame.
   vtkIdType capacity = needed + needed / 4 + 4096;
-  const vtkIdType limit = 0x3FFFFFFF; // node indices + 1 fit in 30 bits (TRC_ENTRY_NODE)
+  const vtkIdType limit = 0x7FFFFFFF; // node indices + 1 fit in 31 bits (TRC_ENTRY_NODE)
   if (needed > limit)
   {
     error = "The view needs more ray entries (" + std::to_string(needed) +
-      ") than the compute pipeline can list (2^30). Nothing is drawn.";
+      ") than the compute pipeline can list (2^31). Nothing is drawn.";
     return false;
   }
   capacity = std::min(capacity, limit);
@@ -422,7 +422,7 @@ bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
     return true; // Render() returns without waiting: the counts arrive with a later frame
   }
   this->ReadCounts(stats);
-  if (this->RaysIncomplete > 0)
+  if (this->EntriesAsked > this->EntryCapacity)
   {
     // The list did not hold this view (the first frame of a mesh, or a camera jump): grow to
     // what it asked for and draw it again.

@@ -85,7 +85,6 @@ public:
   static void Barrier(unsigned int bits);
   ///@}
 
-
   /**
    * Turn GL_DEPTH_CLAMP on or off (vtkOpenGLState does not track it), returning whether it was
    * on. The passes over the boundary faces draw with it, so that no face is clipped at the

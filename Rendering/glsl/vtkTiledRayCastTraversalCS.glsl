@@ -2,8 +2,9 @@
 //============================================================================
 // TiledRayCast, compute pipeline: the whole traversal of every ray in one
 // dispatch, one invocation per pixel in 8x4 workgroups (the paper's tiles, at
-// the size measured fastest on the H200: one warp of neighbouring rays). A ray takes its pixel's entries in depth
-// order: the first hit is the nearest (a near-plane entry before any face),
+// the size measured fastest on the H200: one warp of neighbouring rays). A ray
+// takes its pixel's entries in depth order: the first hit is the nearest (a
+// near-plane entry before any face),
 // and after the ray leaves the mesh at lambda X the next layer is the nearest
 // face at or behind X, never one within in_peelEpsilon of the last entry with
 // a key at or below its key: the rules of the fragment pipeline's peeling, so
@@ -175,10 +176,11 @@ void main()
     {
       atomicAdd(trcGroupStopped, 1u);
     }
-    if (lost)
-    {
-      atomicAdd(trcGroupIncomplete, 1u);
-    }
+  }
+  // Counted whether or not any of its entries fit: a ray that lost them all has no list.
+  if (lost)
+  {
+    atomicAdd(trcGroupIncomplete, 1u);
   }
   if (inImage)
   {
