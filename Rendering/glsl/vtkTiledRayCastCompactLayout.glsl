@@ -5,6 +5,9 @@
 // the linear scalar field are computed here, from the four points.
 //============================================================================
 uniform usamplerBuffer in_TetPoints;
+// A neighbour word holds the face the walk enters by: the walk need not remember the tet it
+// came from (a register through every step).
+const bool TRC_LAYOUT_STORES_ENTRY_FACES = true;
 uniform usamplerBuffer in_TetNeighbors;
 uniform samplerBuffer in_Points;
 //TRC::CellScalars::Dec
@@ -19,35 +22,54 @@ void trcTetPoints(uint tet, out vec3 p[4])
   p[3] = texelFetch(in_Points, int(ids.w)).xyz;
 }
 
-// Points, outward face normals (not normalised) and the scalar field
-// s(x) = dot(field.xyz, x) + field.w of one tet.
-void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
+// A tet as the walk holds it: its points and the scalar field
+// s(x) = dot(field.xyz, x) + field.w. Face normals are computed where the walk uses them
+// (trcFaceNormal): four of them held through the step would take twelve registers.
+struct TrcTet
+{
+  vec3 p[4];
+  vec4 field;
+};
+
+void trcLoadTet(uint tet, out TrcTet t)
 {
   uvec4 ids = texelFetch(in_TetPoints, int(tet));
   vec4 q0 = texelFetch(in_Points, int(ids.x));
   vec4 q1 = texelFetch(in_Points, int(ids.y));
   vec4 q2 = texelFetch(in_Points, int(ids.z));
   vec4 q3 = texelFetch(in_Points, int(ids.w));
-  p[0] = q0.xyz;
-  p[1] = q1.xyz;
-  p[2] = q2.xyz;
-  p[3] = q3.xyz;
-  vec3 e1 = p[1] - p[0];
-  vec3 e2 = p[2] - p[0];
-  vec3 e3 = p[3] - p[0];
-  n[0] = cross(p[2] - p[1], p[3] - p[1]);
-  n[1] = cross(e3, e2);
-  n[2] = cross(e1, e3);
-  n[3] = cross(e2, e1);
+  t.p[0] = q0.xyz;
+  t.p[1] = q1.xyz;
+  t.p[2] = q2.xyz;
+  t.p[3] = q3.xyz;
   //TRC::CellScalars::Impl
-  // The gradient of the linear interpolant: grad(b_i) = -n_i / det for a
-  // positively oriented tet, so grad(s) = -(sum s_i n_i) / det.
-  float det = dot(e1, cross(e2, e3));
-  vec3 weighted = q0.w * n[0] + q1.w * n[1] + q2.w * n[2] + q3.w * n[3];
+  // The gradient of the linear interpolant from the edges e_i = p_i - p_0 and the scalar
+  // differences along them: grad(s) = sum_i (s_i - s_0) (e_j x e_k) / det, (i, j, k) cyclic.
+  vec3 e1 = t.p[1] - t.p[0];
+  vec3 e2 = t.p[2] - t.p[0];
+  vec3 e3 = t.p[3] - t.p[0];
+  vec3 c23 = cross(e2, e3);
+  float det = dot(e1, c23);
+  vec3 weighted = (q1.w - q0.w) * c23 + (q2.w - q0.w) * cross(e3, e1) + (q3.w - q0.w) * cross(e1, e2);
   // A degenerate tet holds no volume: any field will do, but it must be finite.
   float scale = dot(e1, e1) + dot(e2, e2) + dot(e3, e3);
-  vec3 g = abs(det) > 1e-12 * scale * sqrt(scale) ? -weighted / det : vec3(0.0);
-  field = vec4(g, 0.25 * (q0.w + q1.w + q2.w + q3.w) - dot(g, 0.25 * (p[0] + p[1] + p[2] + p[3])));
+  vec3 g = abs(det) > 1e-12 * scale * sqrt(scale) ? weighted / det : vec3(0.0);
+  t.field = vec4(g,
+    0.25 * (q0.w + q1.w + q2.w + q3.w) - dot(g, 0.25 * (t.p[0] + t.p[1] + t.p[2] + t.p[3])));
+}
+
+// The outward normal (not normalised) of face f, opposite point f; f is a constant where the
+// walk calls this (its loop over faces is unrolled), so only one cross product is made.
+vec3 trcFaceNormal(TrcTet t, int f)
+{
+  if (f == 0)
+  {
+    return cross(t.p[2] - t.p[1], t.p[3] - t.p[1]);
+  }
+  vec3 e1 = t.p[1] - t.p[0];
+  vec3 e2 = t.p[2] - t.p[0];
+  vec3 e3 = t.p[3] - t.p[0];
+  return f == 1 ? cross(e3, e2) : (f == 2 ? cross(e1, e3) : cross(e2, e1));
 }
 
 // A point of face `face` and its outward normal, as trcLoadTet computes it (the first-hit and
@@ -63,14 +85,23 @@ void trcLoadFace(uint tet, int face, out vec3 point, out vec3 normal)
   normal = cross(b - a, c - a);
 }
 
-// Neighbour tet across each face and the index of the shared face in it.
-void trcLoadNeighbors(uint tet, out uvec4 tets, out ivec4 faces)
+// The neighbour words of a tet, ((n << 2) | face in n) or TRC_NO_NEIGHBOR per face, read as
+// they are stored: the walk decodes only the word of the face it leaves through (four decoded
+// neighbours and four faces would hold eight registers through the step).
+uvec4 trcLoadNeighborWords(uint tet)
 {
-  uvec4 words = texelFetch(in_TetNeighbors, int(tet));
-  tets = words >> 2u;
-  faces = ivec4(words & 3u);
-  tets.x = words.x == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : tets.x;
-  tets.y = words.y == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : tets.y;
-  tets.z = words.z == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : tets.z;
-  tets.w = words.w == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : tets.w;
+  return texelFetch(in_TetNeighbors, int(tet));
+}
+
+// The neighbour across face f, or TRC_NO_NEIGHBOR.
+uint trcNeighborTet(uvec4 words, int f)
+{
+  uint word = words[f];
+  return word == TRC_NO_NEIGHBOR ? TRC_NO_NEIGHBOR : word >> 2u;
+}
+
+// The index of face f in the neighbour across it.
+int trcNeighborFace(uvec4 words, int f)
+{
+  return int(words[f] & 3u);
 }

@@ -13,6 +13,8 @@ uniform sampler2D in_Vertices;
 uniform sampler2D in_FaceNormals;
 uniform sampler2D in_NeighborsAndScalars;
 uniform int in_paperWidth;
+// The walk finds the entry face as the one shared with the tet it came from.
+const bool TRC_LAYOUT_STORES_ENTRY_FACES = false;
 
 ivec2 trcPaperTexel(uint tet)
 {
@@ -39,12 +41,25 @@ void trcTetPoints(uint tet, out vec3 p[4])
   trcPaperUnpack(in_Vertices, trcPaperTexel(tet), p);
 }
 
-void trcLoadTet(uint tet, out vec3 p[4], out vec3 n[4], out vec4 field)
+// A tet as the walk holds it: points, the stored outward face normals and the field.
+struct TrcTet
+{
+  vec3 p[4];
+  vec3 n[4];
+  vec4 field;
+};
+
+void trcLoadTet(uint tet, out TrcTet t)
 {
   ivec2 c = trcPaperTexel(tet);
-  trcPaperUnpack(in_Vertices, c, p);
-  trcPaperUnpack(in_FaceNormals, c, n);
-  field = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 2), 0);
+  trcPaperUnpack(in_Vertices, c, t.p);
+  trcPaperUnpack(in_FaceNormals, c, t.n);
+  t.field = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 2), 0);
+}
+
+vec3 trcFaceNormal(TrcTet t, int f)
+{
+  return t.n[f];
 }
 
 // A point of face `face` and its outward normal (the first-hit and entry passes need no more).
@@ -68,11 +83,22 @@ uint trcPaperTet(vec2 uv)
   return uint(int(uv.y) / 3 * in_paperWidth + int(uv.x));
 }
 
-void trcLoadNeighbors(uint tet, out uvec4 tets, out ivec4 faces)
+// The paper's layout stores neighbours as texel coordinates: the words are the neighbours'
+// tet indices (TRC_NO_NEIGHBOR for none), and no entry face.
+uvec4 trcLoadNeighborWords(uint tet)
 {
   ivec2 c = trcPaperTexel(tet);
   vec4 a01 = texelFetch(in_NeighborsAndScalars, c, 0);
   vec4 a23 = texelFetch(in_NeighborsAndScalars, c + ivec2(0, 1), 0);
-  tets = uvec4(trcPaperTet(a01.xy), trcPaperTet(a01.zw), trcPaperTet(a23.xy), trcPaperTet(a23.zw));
-  faces = ivec4(TRC_FACE_FROM_PREVIOUS);
+  return uvec4(trcPaperTet(a01.xy), trcPaperTet(a01.zw), trcPaperTet(a23.xy), trcPaperTet(a23.zw));
+}
+
+uint trcNeighborTet(uvec4 words, int f)
+{
+  return words[f];
+}
+
+int trcNeighborFace(uvec4 words, int f)
+{
+  return TRC_FACE_FROM_PREVIOUS;
 }

@@ -34,7 +34,7 @@ int trcFindNode(float s)
   int hi = in_transferFunctionNodes;
   while (hi - lo > 1)
   {
-    int mid = (lo + hi) / 2;
+    int mid = (lo + hi) >> 1; // both are non-negative: a shift, not a signed division
     if (trcNodeScalar(mid) <= s)
     {
       lo = mid;

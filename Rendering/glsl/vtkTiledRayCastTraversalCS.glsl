@@ -119,11 +119,16 @@ void main()
   ivec2 pixel = ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
-  bool lost = (word & TRC_ENTRY_LOST) != 0u;
   uint head = word & TRC_ENTRY_NODE;
   if (word != 0u)
   {
     imageStore(in_entryHeads, pixel, uvec4(0u));
+  }
+  // Counted whether or not any of its entries fit (a ray that lost them all has no list), and
+  // here, so that no register holds it through the walk.
+  if ((word & TRC_ENTRY_LOST) != 0u)
+  {
+    atomicAdd(trcGroupIncomplete, 1u);
   }
   vec4 color = vec4(0.0);
   int steps = 0;
@@ -176,11 +181,6 @@ void main()
     {
       atomicAdd(trcGroupStopped, 1u);
     }
-  }
-  // Counted whether or not any of its entries fit: a ray that lost them all has no list.
-  if (lost)
-  {
-    atomicAdd(trcGroupIncomplete, 1u);
   }
   if (inImage)
   {

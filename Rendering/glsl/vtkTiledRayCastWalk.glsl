@@ -16,12 +16,12 @@
 const int TRC_MAXIMUM_STALLS = 64;
 
 // The face of `tet` shared with `previous` (layouts that store no entry face).
-int trcSharedFace(uint previous, uvec4 neighbors)
+int trcSharedFace(uint previous, uvec4 neighborWords)
 {
   int entry = TRC_NO_FACE;
   for (int f = 0; f < 4; ++f)
   {
-    entry = neighbors[f] == previous ? f : entry;
+    entry = trcNeighborTet(neighborWords, f) == previous ? f : entry;
   }
   return entry;
 }
@@ -35,16 +35,12 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
   while (status == TRC_ACTIVE && taken < maximumSteps)
   {
     ++taken;
-    vec3 p[4];
-    vec3 n[4];
-    vec4 field;
-    trcLoadTet(tet, p, n, field);
-    uvec4 neighbors;
-    ivec4 neighborFaces;
-    trcLoadNeighbors(tet, neighbors, neighborFaces);
-    if (entry == TRC_FACE_FROM_PREVIOUS)
+    TrcTet t;
+    trcLoadTet(tet, t);
+    uvec4 neighborWords = trcLoadNeighborWords(tet);
+    if (!TRC_LAYOUT_STORES_ENTRY_FACES && entry == TRC_FACE_FROM_PREVIOUS)
     {
-      entry = trcSharedFace(previous, neighbors);
+      entry = trcSharedFace(previous, neighborWords);
     }
 
     // The exit face: the nearest plane the ray leaves through, never the entry face.
@@ -62,7 +58,8 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
       {
         continue;
       }
-      float den = dot(n[f], ray.dir);
+      vec3 normal = trcFaceNormal(t, f);
+      float den = dot(normal, ray.dir);
       if (den > steepest)
       {
         steepest = den;
@@ -70,7 +67,10 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
       }
       if (den > 0.0)
       {
-        float step = dot(p[trcFacePoints[f].x] - here, n[f]) / den;
+        // A point of face f: point 1 for face 0, point 0 for the others (trcFacePoints).
+        // Chosen without indexing p by a table: NVIDIA's compiler then keeps p in local
+        // memory, not in registers.
+        float step = dot((f == 0 ? t.p[1] : t.p[0]) - here, normal) / den;
         if (step < exitStep)
         {
           exitStep = step;
@@ -90,8 +90,8 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
 
     bool stopped = exitLambda >= ray.lambdaMax;
     float endLambda = min(exitLambda, ray.lambdaMax);
-    float sFront = dot(field.xyz, ray.origin + lambda * ray.dir) + field.w;
-    float sBack = dot(field.xyz, ray.origin + endLambda * ray.dir) + field.w;
+    float sFront = dot(t.field.xyz, here) + t.field.w;
+    float sBack = dot(t.field.xyz, ray.origin + endLambda * ray.dir) + t.field.w;
     trcIntegrate(sFront, sBack, (endLambda - lambda) * ray.worldScale, color);
     lambda = endLambda;
 
@@ -103,25 +103,26 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
     {
       status = TRC_DONE_DEPTH;
     }
-    else if (neighbors[exitFace] == TRC_NO_NEIGHBOR || stalls > TRC_MAXIMUM_STALLS)
-    {
-      status = TRC_WAITING;
-    }
     else
     {
-      previous = tet;
-      tet = neighbors[exitFace];
-      entry = neighborFaces[exitFace];
+      uint next = trcNeighborTet(neighborWords, exitFace);
+      if (next == TRC_NO_NEIGHBOR || stalls > TRC_MAXIMUM_STALLS)
+      {
+        status = TRC_WAITING;
+      }
+      else
+      {
+        previous = TRC_LAYOUT_STORES_ENTRY_FACES ? previous : tet;
+        tet = next;
+        entry = trcNeighborFace(neighborWords, exitFace);
+      }
     }
   }
-  if (status == TRC_ACTIVE && entry == TRC_FACE_FROM_PREVIOUS)
+  if (!TRC_LAYOUT_STORES_ENTRY_FACES && status == TRC_ACTIVE && entry == TRC_FACE_FROM_PREVIOUS)
   {
     // The walk ends inside the mesh: resolve the entry face now, the next walk
     // does not know where the ray came from.
-    uvec4 neighbors;
-    ivec4 neighborFaces;
-    trcLoadNeighbors(tet, neighbors, neighborFaces);
-    entry = trcSharedFace(previous, neighbors);
+    entry = trcSharedFace(previous, trcLoadNeighborWords(tet));
   }
   steps += taken;
   return status;
