@@ -28,6 +28,7 @@
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkSMPThreadLocal.h"
@@ -395,6 +396,9 @@ public:
   // Warnings given once.
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
+  bool WarnedClippingPlanes = false;
+  bool WarnedShading = false;
+  bool WarnedGradientOpacity = false;
   bool WarnedStoppedRays = false;
   std::string LastError;
 
@@ -413,6 +417,8 @@ public:
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
+  // Once each: the property asks for shading or gradient opacity, which are not drawn.
+  void WarnUnsupportedProperty(vtkVolumeProperty* property);
   bool CheckContext(vtkOpenGLRenderWindow* window);
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
@@ -608,6 +614,37 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::str
     vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
     vtkErrorWithObjectMacro(self, << message);
     this->LastError = message;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnUnsupportedProperty(
+  vtkVolumeProperty* property)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  if (property->GetShade(0) && !this->WarnedShading)
+  {
+    vtkWarningWithObjectMacro(self, "Shading (vtkVolumeProperty::ShadeOn) is not supported by "
+                                    "this mapper yet: the volume is drawn unshaded.");
+    this->WarnedShading = true;
+  }
+  // A gradient opacity function that is 1 everywhere changes nothing (ParaView sets one).
+  bool gradientOpacity = false;
+  if (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0))
+  {
+    vtkPiecewiseFunction* f = property->GetStoredGradientOpacity(0);
+    for (int i = 0; f && i < f->GetSize() && !gradientOpacity; ++i)
+    {
+      double node[4];
+      f->GetNodeValue(i, node);
+      gradientOpacity = node[1] != 1.0;
+    }
+  }
+  if (gradientOpacity && !this->WarnedGradientOpacity)
+  {
+    vtkWarningWithObjectMacro(self, "Gradient opacity is not supported by this mapper: the "
+                                    "volume's opacity depends on the scalar alone.");
+    this->WarnedGradientOpacity = true;
   }
 }
 
@@ -1458,6 +1495,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShader
   p->SetUniformMatrix3x3("in_objectToWorld", const_cast<float*>(g.ObjectToWorld));
   p->SetUniformMatrix4x4("in_objectToClip", const_cast<float*>(g.ObjectToClip));
   p->SetUniform4f("in_nearPlane", g.NearPlane);
+  p->SetUniformi("in_numberOfClippingPlanes", g.NumberOfClippingPlanes);
+  if (g.NumberOfClippingPlanes > 0)
+  {
+    p->SetUniform4fv("in_clippingPlanes", g.NumberOfClippingPlanes, g.ClippingPlanes);
+  }
   p->SetUniformi("in_opaqueDepth", this->OpaqueDepth->GetTextureUnit());
   p->SetUniformf(
     "in_earlyTerminationOpacity", static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
@@ -2117,6 +2159,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The volume has no property. Nothing is drawn.");
     return;
   }
+  impl->WarnUnsupportedProperty(property);
 
   int width = 0, height = 0;
   ren->GetTiledSizeAndOrigin(&width, &height, &impl->Viewport[0], &impl->Viewport[1]);
@@ -2136,6 +2179,19 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return;
+  }
+  if (!impl->Geometry.ComputeClippingPlanes(
+        this->ClippingPlanes, vol, impl->Shift, impl->MeshBounds) &&
+    !impl->WarnedClippingPlanes)
+  {
+    vtkErrorMacro(<< this->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "
+                  << "clips with the first " << vtkTiledRayCastFrameGeometry::MaximumClippingPlanes
+                  << " (as VTK's OpenGL mappers).");
+    impl->WarnedClippingPlanes = true;
+  }
+  if (impl->Geometry.ClippedAway)
+  {
+    return; // the clipping planes leave nothing of the mesh: nothing is visible
   }
   if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
     !impl->UpdatePrograms(window) || !impl->UpdateTargets(window, width, height))

@@ -24,6 +24,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -40,6 +42,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -893,6 +896,7 @@ vtkTetReferenceRenderer::~vtkTetReferenceRenderer()
   this->SetCamera(nullptr);
   this->SetVolume(nullptr);
   this->SetOpaqueDepth(nullptr);
+  this->SetClippingPlanes(nullptr);
   this->SetArrayName(nullptr);
   this->VolumeMatrix->Delete();
   this->Output->Delete();
@@ -928,6 +932,12 @@ void vtkTetReferenceRenderer::SetCamera(vtkCamera* camera)
 void vtkTetReferenceRenderer::SetVolume(vtkVolume* volume)
 {
   vtkSetObjectBodyMacro(Volume, vtkVolume, volume);
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::SetClippingPlanes(vtkPlaneCollection* planes)
+{
+  vtkSetObjectBodyMacro(ClippingPlanes, vtkPlaneCollection, planes);
 }
 
 //------------------------------------------------------------------------------
@@ -1146,6 +1156,28 @@ int vtkTetReferenceRenderer::Render()
       static_cast<double>(width) / height, -1.0, 1.0));
   vtkMatrix4x4::Invert(inverse, inverse);
   const double* center = in.Center;
+  // The clipping planes in the shifted world coordinates of the rays (n.x + d >= 0 is kept).
+  std::vector<std::array<double, 4>> clipping;
+  if (this->ClippingPlanes)
+  {
+    for (int k = 0; k < this->ClippingPlanes->GetNumberOfItems(); ++k)
+    {
+      vtkPlane* plane = this->ClippingPlanes->GetItem(k);
+      std::array<double, 4> h;
+      plane->GetNormal(h.data());
+      double origin[3];
+      plane->GetOrigin(origin);
+      h[3] = 0.0;
+      for (int r = 0; r < 3; ++r)
+      {
+        h[3] -= h[r] * (origin[r] - center[r]);
+      }
+      if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)
+      {
+        clipping.push_back(h);
+      }
+    }
+  }
   auto unproject = [&inverse, center](double x, double y, double z, double p[3])
   {
     double h[4];
@@ -1233,7 +1265,26 @@ int vtkTetReferenceRenderer::Render()
               ((p[0] - nearP[0]) * d[0] + (p[1] - nearP[1]) * d[1] + (p[2] - nearP[2]) * d[2]) / dd;
             lambdaMax = std::min(1.0, std::max(0.0, lambdaMax));
           }
-          if (!(lambdaMax > 0.0))
+          // The kept half-spaces cut the ray to [lambdaMin, lambdaMax].
+          double lambdaMin = 0.0;
+          for (const std::array<double, 4>& h : clipping)
+          {
+            const double at0 = h[0] * nearP[0] + h[1] * nearP[1] + h[2] * nearP[2] + h[3];
+            const double rate = h[0] * d[0] + h[1] * d[1] + h[2] * d[2];
+            if (rate > 0.0)
+            {
+              lambdaMin = std::max(lambdaMin, -at0 / rate);
+            }
+            else if (rate < 0.0)
+            {
+              lambdaMax = std::min(lambdaMax, -at0 / rate);
+            }
+            else if (at0 < 0.0)
+            {
+              lambdaMax = -1.0;
+            }
+          }
+          if (!(lambdaMax > 0.0) || !(lambdaMax > lambdaMin))
           {
             continue;
           }
@@ -1246,7 +1297,7 @@ int vtkTetReferenceRenderer::Render()
           {
             origin[k] = nearP[k] + lambdaC * d[k];
           }
-          in.CastRay(origin, d, -lambdaC, lambdaMax - lambdaC, hits);
+          in.CastRay(origin, d, lambdaMin - lambdaC, lambdaMax - lambdaC, hits);
           countOut[pixel] = static_cast<int>(hits.size());
           const double unitLength = std::sqrt(dd);
           double color[3] = { 0.0, 0.0, 0.0 };
@@ -1466,6 +1517,7 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
   os << indent << "Volume: " << this->Volume << "\n";
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
+  os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
   os << indent << "SampleOffset: " << this->SampleOffset[0] << ", " << this->SampleOffset[1]
      << "\n";
   os << indent << "DoublePrecisionOutput: " << this->DoublePrecisionOutput << "\n";

@@ -67,6 +67,7 @@
 
 class vtkCamera;
 class vtkDataSet;
+class vtkPlaneCollection;
 class vtkFloatArray;
 class vtkImageData;
 class vtkMatrix4x4;
@@ -161,6 +162,16 @@ public:
   vtkMatrix4x4* GetVolumeMatrix();
   void SetVolume(vtkVolume* volume);
   vtkGetObjectMacro(Volume, vtkVolume);
+  ///@}
+
+  ///@{
+  /**
+   * Optional clipping planes in world coordinates, as a mapper's (vtkAbstractMapper): each
+   * keeps the half-space its normal points into, and every ray is cut exactly to the
+   * intersection of the kept half-spaces. Any number of planes.
+   */
+  void SetClippingPlanes(vtkPlaneCollection* planes);
+  vtkGetObjectMacro(ClippingPlanes, vtkPlaneCollection);
   ///@}
 
   ///@{
@@ -274,6 +285,7 @@ protected:
   vtkMatrix4x4* VolumeMatrix;
   vtkVolume* Volume;
   vtkFloatArray* OpaqueDepth;
+  vtkPlaneCollection* ClippingPlanes = nullptr;
   double SampleOffset[2];
   vtkTypeBool DoublePrecisionOutput;
   vtkImageData* Output;

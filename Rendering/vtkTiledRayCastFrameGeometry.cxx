@@ -14,6 +14,8 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkRenderer.h"
 #include "vtkVolume.h"
 
@@ -193,4 +195,62 @@ double vtkTiledRayCastFrameGeometry::ComputeBoundsCoverage(const double meshBoun
     area *= std::max(0.0, std::min(hi[a], 1.0) - std::max(lo[a], -1.0)) / 2.0;
   }
   return area;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastFrameGeometry::ComputeClippingPlanes(vtkPlaneCollection* planes,
+  vtkVolume* vol, const double shiftBy[3], const double meshBounds[6])
+{
+  this->NumberOfClippingPlanes = 0;
+  this->ClippedAway = false;
+  const int given = planes ? planes->GetNumberOfItems() : 0;
+  if (given == 0)
+  {
+    return true;
+  }
+  // A plane (n, -n.o) as a row vector times the shifted-object-to-world matrix: the same
+  // function of the point, so the kept side stays the kept side under any matrix (mirrors too).
+  vtkNew<vtkMatrix4x4> shift;
+  for (int i = 0; i < 3; ++i)
+  {
+    shift->SetElement(i, 3, shiftBy[i]);
+  }
+  vtkNew<vtkMatrix4x4> objectToWorld;
+  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), shift, objectToWorld);
+  for (int k = 0; k < std::min(given, MaximumClippingPlanes); ++k)
+  {
+    vtkPlane* plane = planes->GetItem(k);
+    double normal[3], origin[3];
+    plane->GetNormal(normal);
+    plane->GetOrigin(origin);
+    const double world[4] = { normal[0], normal[1], normal[2], -vtkMath::Dot(normal, origin) };
+    double object[4];
+    for (int c = 0; c < 4; ++c)
+    {
+      object[c] = 0;
+      for (int r = 0; r < 4; ++r)
+      {
+        object[c] += world[r] * objectToWorld->GetElement(r, c);
+      }
+    }
+    const double length = std::sqrt(vtkMath::Dot(object, object));
+    if (!(length > 0) || !std::isfinite(length) || !std::isfinite(object[3]))
+    {
+      continue; // a plane without a normal clips nothing
+    }
+    bool kept = false;
+    for (int c = 0; c < 8; ++c)
+    {
+      const double p[3] = { meshBounds[c & 1], meshBounds[2 + ((c >> 1) & 1)],
+        meshBounds[4 + ((c >> 2) & 1)] };
+      kept = kept || vtkMath::Dot(object, p) + object[3] >= 0;
+    }
+    this->ClippedAway = this->ClippedAway || !kept;
+    float* out = this->ClippingPlanes[this->NumberOfClippingPlanes++];
+    for (int c = 0; c < 4; ++c)
+    {
+      out[c] = static_cast<float>(object[c] / length);
+    }
+  }
+  return given <= MaximumClippingPlanes;
 }

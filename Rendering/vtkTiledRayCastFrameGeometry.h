@@ -27,6 +27,7 @@
 #ifndef vtkTiledRayCastFrameGeometry_h
 #define vtkTiledRayCastFrameGeometry_h
 
+class vtkPlaneCollection;
 class vtkRenderer;
 class vtkVolume;
 
@@ -41,6 +42,20 @@ public:
    */
   bool Compute(
     vtkRenderer* renderer, vtkVolume* volume, const double shift[3], const double meshBounds[6]);
+
+  /**
+   * The mapper's clipping planes (world coordinates, VTK's: the side a plane's normal points to
+   * is kept) in shifted object coordinates, normalised, for this volume's matrix: at most
+   * MaximumClippingPlanes. Call after Compute(). Returns false when there are more planes (the
+   * first MaximumClippingPlanes are kept). ClippedAway: the mesh's bounds lie wholly on the
+   * removed side of a plane, so nothing is left to draw.
+   */
+  bool ComputeClippingPlanes(vtkPlaneCollection* planes, vtkVolume* volume,
+    const double shift[3], const double meshBounds[6]);
+  static constexpr int MaximumClippingPlanes = 6;
+  int NumberOfClippingPlanes = 0;
+  float ClippingPlanes[MaximumClippingPlanes][4] = {}; // n.x + d >= 0 is kept
+  bool ClippedAway = false;
 
   float RayOrigin[3][3] = {};
   float RayDir[3][3] = {};

@@ -96,9 +96,10 @@ void main()
     discard;
   }
   lambda = max(lambda, in_lambdaNear);
-  if (lambda >= ray.lambdaMax)
+  if (lambda >= ray.lambdaMax || ray.lambdaMin >= ray.lambdaMax)
   {
-    // Behind opaque geometry or the far plane.
+    // Behind opaque geometry, the far plane or a clipping plane (or the clipping planes leave
+    // nothing of this ray).
     discard;
   }
   uint key = (ip_tet << 2u) | uint(ip_face);

@@ -30,6 +30,9 @@ uniform float in_lambdaNear;
 uniform mat3 in_objectToWorld;
 // Early ray termination: a ray stops once its opacity reaches this.
 uniform float in_earlyTerminationOpacity;
+// The mapper's clipping planes in object coordinates: dot(xyz, x) + w >= 0 is kept.
+uniform int in_numberOfClippingPlanes;
+uniform vec4 in_clippingPlanes[6];
 // Opaque geometry's window depth (the scene before the volume), one texel per
 // viewport pixel.
 uniform sampler2D in_opaqueDepth;
@@ -118,7 +121,8 @@ struct TrcRay
   vec3 dir;
   float wNear;
   float wFar;
-  float lambdaMax;  // where opaque geometry or the far plane stops the ray
+  float lambdaMin;  // where the clipping planes let the ray begin (-3.4e38 without them)
+  float lambdaMax;  // where opaque geometry, the far plane or a clipping plane stops the ray
   float worldScale; // world length of a unit of lambda
 };
 
@@ -164,6 +168,27 @@ TrcRay trcPixelRay(vec2 fragCoord)
   float opaque = texelFetch(in_opaqueDepth, ivec2(fragCoord), 0).r;
   // Depth 1 is the far plane: the ray ends there when nothing opaque is in the way.
   ray.lambdaMax = trcLambdaFromWindowDepth(ray, opaque);
+  // The kept half-spaces of the clipping planes cut the ray to one interval: a plane the ray
+  // runs into the kept side of raises its start, one it runs out of lowers its end.
+  ray.lambdaMin = -3.4e38;
+  for (int i = 0; i < in_numberOfClippingPlanes; ++i)
+  {
+    vec4 plane = in_clippingPlanes[i];
+    float at0 = dot(plane.xyz, ray.origin) + plane.w;
+    float rate = dot(plane.xyz, ray.dir);
+    if (rate > 0.0)
+    {
+      ray.lambdaMin = max(ray.lambdaMin, -at0 / rate);
+    }
+    else if (rate < 0.0)
+    {
+      ray.lambdaMax = min(ray.lambdaMax, -at0 / rate);
+    }
+    else if (at0 < 0.0)
+    {
+      ray.lambdaMax = -3.4e38; // parallel to the plane, on its removed side
+    }
+  }
   ray.worldScale = length(in_objectToWorld * ray.dir);
   return ray;
 }

@@ -17,7 +17,7 @@ layout(location = 2) out vec4 fragOutput2;
 void main()
 {
   TrcRay ray = trcPixelRay(gl_FragCoord.xy);
-  if (in_lambdaNear >= ray.lambdaMax)
+  if (in_lambdaNear >= ray.lambdaMax || ray.lambdaMin >= ray.lambdaMax)
   {
     discard;
   }

@@ -90,9 +90,12 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
 
     bool stopped = exitLambda >= ray.lambdaMax;
     float endLambda = min(exitLambda, ray.lambdaMax);
-    float sFront = dot(t.field.xyz, here) + t.field.w;
+    // Integrated from where the clipping planes let the ray begin: before that the walk only
+    // crosses tets (a segment wholly before it has no length and adds nothing).
+    float fromLambda = max(lambda, ray.lambdaMin);
+    float sFront = dot(t.field.xyz, ray.origin + fromLambda * ray.dir) + t.field.w;
     float sBack = dot(t.field.xyz, ray.origin + endLambda * ray.dir) + t.field.w;
-    trcIntegrate(sFront, sBack, (endLambda - lambda) * ray.worldScale, color);
+    trcIntegrate(sFront, sBack, (endLambda - fromLambda) * ray.worldScale, color);
     lambda = endLambda;
 
     if (color.a >= in_earlyTerminationOpacity)

@@ -20,6 +20,8 @@
 #include "TetReferenceTestUtilities.h"
 
 #include "vtkMinimalStandardRandomSequence.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkTetReferenceRenderer.h"
 
 namespace
@@ -73,6 +75,30 @@ bool ClipTetrahedron(
   return t1 > t0;
 }
 
+// Cuts [t0, t1] to where p + t d lies on the side of the plane its normal points to.
+bool ClipHalfSpace(
+  vtkPlane* plane, const double p[3], const double d[3], double& t0, double& t1)
+{
+  double n[3], o[3];
+  plane->GetNormal(n);
+  plane->GetOrigin(o);
+  const double g = n[0] * (p[0] - o[0]) + n[1] * (p[1] - o[1]) + n[2] * (p[2] - o[2]);
+  const double s = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
+  if (s > 0)
+  {
+    t0 = std::max(t0, -g / s);
+  }
+  else if (s < 0)
+  {
+    t1 = std::min(t1, -g / s);
+  }
+  else if (g < 0)
+  {
+    return false;
+  }
+  return t1 > t0;
+}
+
 double Length(const double d[3])
 {
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
@@ -109,8 +135,9 @@ int TestTetReferenceRendererAnalytic(int, char*[])
   const double tau = 0.8;
   auto constant = trc::ConstantProperty(tau, color);
 
-  // 1. One tetrahedron (either orientation), random cameras, parallel and perspective.
-  for (int trial = 0; trial < 6; ++trial)
+  // 1. One tetrahedron (either orientation), random cameras, parallel and perspective; from
+  //    the seventh trial on, cut by two random clipping planes through its centroid.
+  for (int trial = 0; trial < 12; ++trial)
   {
     double v[4][3];
     vtkNew<vtkPoints> points;
@@ -137,6 +164,21 @@ int TestTetReferenceRendererAnalytic(int, char*[])
     const bool parallel = trial % 2 == 0;
     auto camera = trc::MakeCamera(focal, dir, up, 5.0, parallel, parallel ? 1.5 : 35.0, 1.0, 10.0);
     vtkNew<vtkTetReferenceRenderer> renderer;
+    vtkNew<vtkPlaneCollection> planes;
+    for (int k = 0; trial >= 6 && k < 2; ++k)
+    {
+      vtkNew<vtkPlane> plane;
+      // Through the tet's centroid, so that a wedge of it is left to see.
+      double origin[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        origin[c] = 0.25 * (v[0][c] + v[1][c] + v[2][c] + v[3][c]);
+      }
+      plane->SetOrigin(origin);
+      plane->SetNormal(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+      planes->AddItem(plane);
+    }
+    renderer->SetClippingPlanes(planes);
     vtkImageData* image = RenderImage(renderer, tet, constant, camera, 48, 40);
     TRC_CHECK(image);
     int covered = 0;
@@ -151,7 +193,12 @@ int TestTetReferenceRendererAnalytic(int, char*[])
           d[k] = farP[k] - nearP[k];
         }
         double t0, t1;
-        const double chord = ClipTetrahedron(v, nearP, d, t0, t1) ? (t1 - t0) * Length(d) : 0.0;
+        bool inside = ClipTetrahedron(v, nearP, d, t0, t1);
+        for (int k = 0; k < planes->GetNumberOfItems(); ++k)
+        {
+          inside = inside && ClipHalfSpace(planes->GetItem(k), nearP, d, t0, t1);
+        }
+        const double chord = inside ? (t1 - t0) * Length(d) : 0.0;
         double rgba[4];
         trc::Pixel(image, i, j, rgba);
         const double alpha = -std::expm1(-tau * chord);
@@ -164,7 +211,7 @@ int TestTetReferenceRendererAnalytic(int, char*[])
         }
       }
     }
-    TRC_CHECK(covered > 10);
+    TRC_CHECK(covered > (trial >= 6 ? 3 : 10));
   }
 
   // 2. Cubes [0,4]^3 of 4^3 voxels, 5 or 6 tetrahedra each; pixel centres on grid points,

@@ -27,6 +27,8 @@
 #include "vtkImageData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkTetMeshValidationReport.h"
@@ -162,6 +164,57 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   ok = Refused("maximum intensity", spx, "composite",
          [](vtkTiledRayCastVolumeMapper* m) { m->SetBlendModeToMaximumIntensity(); }) &&
     ok;
+
+  // Seven clipping planes: the first six clip (as in VTK's OpenGL mappers), and the error says
+  // so once.
+  {
+    trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
+    vtkNew<MessageCounter> errors;
+    scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+    double b[6];
+    spx->GetBounds(b);
+    for (int k = 0; k < 7; ++k)
+    {
+      vtkNew<vtkPlane> plane; // each keeps the whole mesh
+      plane->SetOrigin(b[0] - 1.0, b[2] - 1.0, b[4] - 1.0);
+      plane->SetNormal(1.0, 0.5 * k, 0.25);
+      scene.Mapper->AddClippingPlane(plane);
+    }
+    scene.Window->Render();
+    scene.Window->Render();
+    ok = Expect(errors->Count == 1 && errors->Text.find("first 6") != std::string::npos,
+           "seven clipping planes: one error naming the six used (got: " + errors->Text + ")") &&
+      ok;
+    ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "seven clipping planes: drawn") && ok;
+  }
+
+  // Shading and gradient opacity are not drawn: each says so once; a gradient opacity of 1
+  // everywhere (as ParaView sets) changes nothing and says nothing.
+  {
+    auto property = trctest::MakePropertyFor(spx, 0.1);
+    vtkNew<vtkPiecewiseFunction> one;
+    one->AddPoint(0.0, 1.0);
+    one->AddPoint(100.0, 1.0);
+    property->SetGradientOpacity(one);
+    trctest::WatchedVolume scene(spx, property, 64);
+    scene.Window->Render();
+    ok = Expect(scene.Warnings->Count == 0,
+           "a gradient opacity of 1: no warning (got: " + scene.Warnings->Text + ")") &&
+      ok;
+    property->ShadeOn();
+    vtkNew<vtkPiecewiseFunction> ramp;
+    ramp->AddPoint(0.0, 0.0);
+    ramp->AddPoint(100.0, 1.0);
+    property->SetGradientOpacity(ramp);
+    scene.Window->Render();
+    scene.Window->Render();
+    const std::string& text = scene.Warnings->Text;
+    ok = Expect(scene.Warnings->Count == 2 && text.find("Shading") != std::string::npos &&
+             text.find("Gradient opacity") != std::string::npos,
+           "shading and gradient opacity: one warning each (got: " + text + ")") &&
+      ok;
+    ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "shaded: drawn unshaded") && ok;
+  }
 
   // No input after a good frame: VTK's pipeline reports the missing input (on the mapper's
   // executive) and the statistics describe the empty frame, not the last one drawn.

@@ -23,6 +23,7 @@
 #include "vtkImageData.h"
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 #include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPointDataToCellData.h"
 #include "vtkPolyDataMapper.h"
@@ -130,6 +131,59 @@ bool AllRaysStartInside(Scene& t)
 // length. The exact integral is 119/255 of blue (an independent quadrature gave the same);
 // partial pre-integration read its Psi table transposed until a later version and rendered 94,
 // and the 2D table's opacity correction, stretched over the whole slab, rendered 148.
+// A transformed spx cut by two clipping planes (world coordinates): an oblique one through the
+// middle, where rays start inside the mesh, and one that trims a side. Then checks that planes
+// which leave nothing of the mesh draw nothing, and that planes which clip nothing change
+// nothing.
+bool LoadClipped(Scene& s, int argc, char* argv[])
+{
+  if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.02))
+    return false;
+  s.Volume->SetOrientation(10, 25, 0);
+  s.Volume->SetScale(1.2, 0.8, 1.0);
+  s.Renderer->ResetCamera();
+  s.View(20, 30, 1.8);
+  double bounds[6];
+  s.Volume->GetBounds(bounds);
+  const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+    0.5 * (bounds[4] + bounds[5]) };
+  vtkNew<vtkPlane> oblique;
+  oblique->SetOrigin(centre);
+  oblique->SetNormal(0.6, -0.3, 0.75);
+  s.Mapper->AddClippingPlane(oblique);
+  vtkNew<vtkPlane> side;
+  side->SetOrigin(centre[0], bounds[2] + 0.2 * (bounds[3] - bounds[2]), centre[2]);
+  side->SetNormal(0.0, 1.0, 0.1);
+  s.Mapper->AddClippingPlane(side);
+  s.Check = [](Scene& t)
+  {
+    vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+    const vtkIdType clippedRays = stats->GetNumberOfRays();
+    bool ok = Expect(clippedRays > 8000, "rays entered the clipped mesh");
+    // A plane that keeps nothing of the mesh's bounds: nothing is visible, nothing is drawn.
+    double b[6];
+    t.Volume->GetBounds(b);
+    vtkNew<vtkPlane> all;
+    all->SetOrigin(b[1] + 1.0, b[3] + 1.0, b[5] + 1.0);
+    all->SetNormal(1.0, 1.0, 1.0);
+    t.Mapper->AddClippingPlane(all);
+    t.Window->Render();
+    ok = Expect(!stats->GetRendered(), "nothing drawn when the planes keep nothing") && ok;
+    t.Mapper->RemoveClippingPlane(all);
+    // A plane that keeps all of it changes nothing.
+    vtkNew<vtkPlane> none;
+    none->SetOrigin(b[0] - 1.0, b[2] - 1.0, b[4] - 1.0);
+    none->SetNormal(1.0, 1.0, 1.0);
+    t.Mapper->AddClippingPlane(none);
+    t.Window->Render();
+    ok = Expect(stats->GetNumberOfRays() == clippedRays, "a plane that clips nothing") && ok;
+    t.Mapper->RemoveClippingPlane(none);
+    t.Window->Render();
+    return ok;
+  };
+  return true;
+}
+
 bool LoadThick(Scene& s, int mode)
 {
   vtkNew<vtkImageData> box;
@@ -424,6 +478,13 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Volume->SetProperty(trctest::MakePropertyFor(s.Grid, 0.1));
         s.View(20, 30);
         return true;
+      } },
+    { "clipped", LoadClipped },
+    { "clipped_fragment",
+      [](Scene& s, int argc, char* argv[])
+      {
+        s.Mapper->SetPipelineToFragment();
+        return LoadClipped(s, argc, argv);
       } },
     { "thick",
       [](Scene& s, int, char*[])

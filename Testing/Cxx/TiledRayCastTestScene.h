@@ -217,6 +217,7 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   reference->SetImageSize(width, height);
   reference->SetVolume(volume);
   reference->SetOpaqueDepth(depth);
+  reference->SetClippingPlanes(mapper->GetClippingPlanes());
   if (configure)
   {
     configure(reference);
