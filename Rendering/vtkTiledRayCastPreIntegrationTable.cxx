@@ -10,8 +10,10 @@
 =========================================================================*/
 #include "vtkTiledRayCastPreIntegrationTable.h"
 
+#include "vtkColorTransferFunction.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkSMPTools.h"
 #include "vtkTetRayIntegrator.h"
 #include "vtkTimerLog.h"
@@ -92,6 +94,41 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
   float* table = this->Table.data();
   const double lo = scalarRange[0];
   // One (front, back) row of lengths per work item.
+  // Only the getter of the property's own colour function: the other one would create a default
+  // function and switch the property's colour channels to it.
+  const bool gray = property->GetColorChannels(0) == 1;
+  vtkPiecewiseFunction* grays = gray ? property->GetGrayTransferFunction(0) : nullptr;
+  vtkColorTransferFunction* colors = gray ? nullptr : property->GetRGBTransferFunction(0);
+  // The mean colour of segments too short for their alpha to tell it: taken at a length so
+  // short that attenuation inside the segment is negligible, else (no opacity at all) the colour
+  // function at the middle of the scalars.
+  const double shortLength = 1e-6 * std::max(is3D ? maxLength : reference, 1e-300);
+  auto shortMeanColor = [&](double sf, double sb, double mean[3])
+  {
+    double rgba[4];
+    integrator->Integrate(sf, sb, shortLength, rgba);
+    if (rgba[3] > 0)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        mean[c] = rgba[c] / rgba[3];
+      }
+      return;
+    }
+    const double middle = 0.5 * (sf + sb);
+    if (grays)
+    {
+      mean[0] = mean[1] = mean[2] = grays->GetValue(middle);
+    }
+    else if (colors)
+    {
+      colors->GetColor(middle, mean);
+    }
+    else
+    {
+      mean[0] = mean[1] = mean[2] = 0.0;
+    }
+  };
   vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -102,15 +139,38 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
         const int back = static_cast<int>(fb / n);
         const double sf = lo + width * front / (n - 1);
         const double sb = lo + width * back / (n - 1);
+        double shortMean[3];
+        bool haveShortMean = false;
         for (int l = 0; l < nl; ++l)
         {
           const double length = is3D ? maxLength * l / (nl - 1) : reference;
-          integrator->Integrate(sf, sb, length, rgba);
+          double depth = 0.0;
+          integrator->IntegrateWithDepth(sf, sb, length, rgba, &depth);
           float* entry = table + 4 * ((static_cast<size_t>(l) * n + back) * n + front);
-          for (int c = 0; c < 4; ++c)
+          // Relative to the colour's own rounding: below this alpha the mean colour is the
+          // short-segment limit (alpha 0 at length 0, or no opacity at all).
+          if (rgba[3] > 1e-12)
           {
-            entry[c] = static_cast<float>(rgba[c]);
+            for (int c = 0; c < 3; ++c)
+            {
+              entry[c] = static_cast<float>(rgba[c] / rgba[3]);
+            }
           }
+          else
+          {
+            if (!haveShortMean)
+            {
+              shortMeanColor(sf, sb, shortMean);
+              haveShortMean = true;
+            }
+            for (int c = 0; c < 3; ++c)
+            {
+              entry[c] = static_cast<float>(shortMean[c]);
+            }
+          }
+          // Beyond an optical depth of 80 alpha is 1 in double: the cap keeps the texture finite
+          // (the integrator says +inf where the transmittance underflowed).
+          entry[3] = static_cast<float>(std::min(depth, 80.0));
         }
       }
     });

@@ -12,11 +12,20 @@
  * @class   vtkTiledRayCastPreIntegrationTable
  * @brief   pre-integrated segment colours for the table-driven integration modes
  *
- * The premultiplied colour and opacity of a ray segment as a function of its front scalar,
- * back scalar and (3D) world length, or of its two scalars for one reference length (2D), as in
- * Bernardon et al. (2004) after Engel et al. (2001). Every entry is computed with the exact
- * segment integrator (vtkTetRayIntegrator), in parallel; the GPU interpolates between entries,
- * which is where the error of these modes comes from.
+ * The colour and opacity of a ray segment as a function of its front scalar, back scalar and
+ * (3D) world length, or of its two scalars for one reference length (2D), as in Bernardon et al.
+ * (2004) after Engel et al. (2001). Every entry is computed with the exact segment integrator
+ * (vtkTetRayIntegrator), in parallel; the GPU interpolates between entries, which is where the
+ * error of these modes comes from.
+ *
+ * An entry holds the segment's optical depth D (alpha = 1 - exp(-D)) and its mean colour, the
+ * premultiplied colour divided by alpha, not the premultiplied colour and alpha themselves: D is
+ * linear in the length for given scalars, so interpolation along the length axis is exact for
+ * it, and it does not saturate where alpha does (a near-opaque segment's alpha is 1 to float
+ * precision at every length but the shortest: interpolated alpha was up to 89/255 off on meshes
+ * of near-opaque tets, and the 2D table's opacity correction, which read D back from alpha,
+ * 181/255). Where alpha is 0 the mean colour is its limit for short segments (the colour function
+ * at the middle of the scalars where the opacity is 0 throughout).
  *
  * The resolution along the scalar axes follows the transfer function unless set: grid points
  * at most half the narrowest transfer-function feature apart over the data's scalar range,
@@ -107,7 +116,8 @@ public:
 
 #ifndef __VTK_WRAP__
   /**
-   * The table, RGBA float, front scalar fastest, then back scalar, then length.
+   * The table, (mean r, g, b, optical depth) float, front scalar fastest, then back scalar,
+   * then length.
    */
   float* GetTable()
   {
@@ -116,7 +126,7 @@ public:
 #endif
 
   /**
-   * Premultiplied RGBA of table entry (front, back, length) (for tests).
+   * Mean colour and optical depth of table entry (front, back, length) (for tests).
    */
   void GetEntry(int front, int back, int length, double rgba[4]) const;
 
