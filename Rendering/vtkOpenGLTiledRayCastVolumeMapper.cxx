@@ -13,7 +13,9 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
+#include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
+#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -22,6 +24,7 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -417,6 +420,9 @@ public:
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
+  // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
+  // then marks the volume with itself as a render pass.
+  static bool InsideVolumetricPeeling(vtkVolume* volume);
   // Once each: the property asks for shading or gradient opacity, which are not drawn.
   void WarnUnsupportedProperty(vtkVolumeProperty* property);
   bool CheckContext(vtkOpenGLRenderWindow* window);
@@ -615,6 +621,25 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::str
     vtkErrorWithObjectMacro(self, << message);
     this->LastError = message;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::InsideVolumetricPeeling(vtkVolume* volume)
+{
+  vtkInformation* keys = volume->GetPropertyKeys();
+  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
+  if (!keys || !keys->Has(passes))
+  {
+    return false;
+  }
+  for (int i = 0; i < passes->Length(keys); ++i)
+  {
+    if (vtkDualDepthPeelingPass::SafeDownCast(passes->Get(keys, i)))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -2114,6 +2139,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   if (!impl->ChoosePipeline())
   {
+    return;
+  }
+  if (impl->InsideVolumetricPeeling(vol))
+  {
+    impl->ReportError("Depth peeling for volumes (vtkRenderer::UseDepthPeelingForVolumes) is not "
+                      "supported by this mapper yet: it draws nothing inside VTK's volumetric "
+                      "peels. Turn it off (the volume is then drawn after translucent geometry).");
     return;
   }
 
