@@ -191,7 +191,7 @@ bool vtkTetMeshCellExtraction::ReadPoints(
     }
   }
   // Coordinates that are NaN or infinite have no place in space: nothing sensible can be
-  // drawn from them, and they would break the sorts below.
+  // drawn from them, and they would break the later stages' sorts.
   std::atomic<vtkIdType> bad(0);
   vtkSMPTools::For(0, 3 * n, 65536,
     [&](vtkIdType begin, vtkIdType end)

@@ -325,7 +325,7 @@ void vtkTetRayIntegratorQuadrature::EstimateRoundingNoise(const double tau[], co
   // units in the last place of the larger end. Where the functions are steep in the scalar
   // (a transfer-function feature a millionth of the range wide, with a huge attenuation),
   // that rounding moves the samples of tau and of the emission by far more than the
-  // tolerance: the estimates above then stop shrinking with the panel, and bisection went on
+  // tolerance: Panel()'s estimates then stop shrinking with the panel, and bisection went on
   // resolving rounding noise for ~1e5 panels per segment. Estimate that noise from the
   // slopes over the panel (the spread of the samples over the panel's scalar span) and the
   // most the two last coefficients and the halves' comparison can take from it; Adapt()
@@ -378,7 +378,8 @@ vtkTetRayIntegratorQuadrature::PieceResult vtkTetRayIntegratorQuadrature::Adapt(
     err = std::max(err, std::fabs(fine.C[i] - coarse.C[i]));
   }
   err = transmittance * std::max(err, left.Unresolved + right.Unresolved);
-  // What rounding of the samples' scalars can explain (see Panel()) is no error to resolve.
+  // What rounding of the samples' scalars can explain (see EstimateRoundingNoise()) is no error to
+  // resolve.
   const double noise = transmittance * (coarse.Noise + left.Noise + right.Noise);
   // Each panel may use the share of the tolerance its length deserves, and at least 1/64 of
   // it: around a jump the error shrinks only like the panel, so a share proportional to the

@@ -44,10 +44,10 @@ public:
     double Depth = 0.0;
     double C[3] = { 0.0, 0.0, 0.0 };
     // Adaptive panels: an estimate of the integration error from how well the samples resolve
-    // the attenuation and the emitted light (see vtkInternals::Panel).
+    // the attenuation and the emitted light (see Panel()).
     double Unresolved = 0.0;
     // Adaptive panels: the part of such estimates that rounding the samples' scalars to doubles
-    // alone can cause (see vtkInternals::Panel); bisection cannot reduce an error below it.
+    // alone can cause (see EstimateRoundingNoise()); bisection cannot reduce an error below it.
     double Noise = 0.0;
   };
 
