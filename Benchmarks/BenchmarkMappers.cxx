@@ -36,9 +36,11 @@
 // of the mapper's whole Render(), its CPU time, the rays, the tets each walked and the per-pixel
 // target memory: the mapper's statistics, read as a user reads them (SynchronousStatistics off,
 // the default, so that the timed frames are the frames a user gets): each frame's statistics
-// then hold the previous frame's GPU times and counts, which the medians do not mind. Settings of ours are
-// named by pipeline; each pipeline's default setting is "compute default" and "fragment default".
+// then hold the previous frame's GPU times and counts, which the medians do not mind. Settings of
+// ours are named by pipeline; each pipeline's default setting is "compute default" and "fragment
+// default".
 #include "BenchmarkMeshOrder.h"
+#include "TiledRayCastSharedScenes.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
@@ -156,27 +158,11 @@ double Median(std::vector<double> v)
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// The transfer function of every benchmark: a four-node colour ramp and an opacity ramp over the
-// scalar range, unit distance 1/20 of the bounding-box diagonal (the scenes of the tests).
+// The transfer function of every benchmark: the ramp of the tests' scenes over the scalar range,
+// unit distance 1/20 of the bounding-box diagonal (TiledRayCastSharedScenes.h).
 vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkDataSet* grid)
 {
-  double range[2];
-  grid->GetPointData()->GetScalars()->GetRange(range);
-  const double lo = range[0], hi = range[1];
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(lo, 0.1, 0.3, 1.0);
-  color->AddRGBPoint(lo + 0.4 * (hi - lo), 0.2, 0.9, 0.4);
-  color->AddRGBPoint(lo + 0.7 * (hi - lo), 1.0, 0.9, 0.1);
-  color->AddRGBPoint(hi, 1.0, 0.2, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(lo, 0.05);
-  opacity->AddPoint(lo + 0.5 * (hi - lo), 0.3);
-  opacity->AddPoint(hi, 0.6);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(0.05 * grid->GetLength());
-  return property;
+  return trcscene::MakePropertyFor(grid, 0.05);
 }
 
 // View i of the camera path: VTK's ResetCamera, then an elevation of 20 degrees and a turn.

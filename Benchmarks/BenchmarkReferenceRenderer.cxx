@@ -22,12 +22,12 @@
 // --tf chooses the colour interpolation: rgb (default; linear between nodes, closed form), hsv,
 // lab, diverging, or sharpness (RGB with midpoint 0.3 and sharpness 0.5 on every node: Hermite
 // curves). Prints one line per dataset (threads = vtkSMPTools threads).
+#include "TiledRayCastSharedScenes.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -35,8 +35,6 @@
 #include "vtkTetReferenceRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
-#include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkWindowToImageFilter.h"
@@ -127,15 +125,13 @@ int main(int argc, char* argv[])
     double range[2], bounds[6];
     grid->GetPointData()->GetScalars()->GetRange(range);
     grid->GetBounds(bounds);
-    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
 
+    // The scene of TestTetReferenceRendererBunyk (TiledRayCastSharedScenes.h), in a VTK renderer
+    // (its camera placement; rendered only with --bunyk).
     const double mid = tf == "sharpness" ? 0.3 : 0.5, sharp = tf == "sharpness" ? 0.5 : 0.0;
-    vtkNew<vtkColorTransferFunction> color;
-    color->AddRGBPoint(range[0], 0.1, 0.2, 1.0, mid, sharp);
-    color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.2, 1.0, 0.3, mid, sharp);
-    color->AddRGBPoint(range[1], 1.0, 0.3, 0.1, mid, sharp);
+    vtkSmartPointer<vtkVolumeProperty> property =
+      trcscene::MakeBunykProperty(range, trcscene::Diagonal(bounds), mid, sharp);
+    vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
     if (tf == "hsv")
     {
       color->SetColorSpaceToHSV();
@@ -148,24 +144,7 @@ int main(int argc, char* argv[])
     {
       color->SetColorSpaceToDiverging();
     }
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(range[0], 0.05, mid, sharp);
-    opacity->AddPoint(range[1], 0.9);
-    vtkNew<vtkVolumeProperty> property;
-    property->SetColor(color);
-    property->SetScalarOpacity(opacity);
-    property->SetScalarOpacityUnitDistance(diagonal / 15.0);
-
-    // The scene, in a VTK renderer (its camera placement; rendered only with --bunyk).
-    vtkNew<vtkUnstructuredGridVolumeRayCastMapper> mapper;
-    mapper->SetInputData(grid);
-    vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
-    mapper->SetRayIntegrator(integrator);
-    mapper->SetImageSampleDistance(1.0f);
-    mapper->AutoAdjustSampleDistancesOff();
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
+    vtkSmartPointer<vtkVolume> volume = trcscene::MakeBunykVolume(grid, property);
     vtkNew<vtkRenderer> renderer;
     renderer->AddVolume(volume);
     renderer->SetBackground(0, 0, 0);

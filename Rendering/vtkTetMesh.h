@@ -281,8 +281,14 @@ protected:
 
   bool CheckTet(vtkIdType tet, const char* method);
 
-  // Everything is written by vtkTetMeshBuilder only.
+  // Everything is written by vtkTetMeshBuilder and its stages (vtkTetMeshBuildState.h) only.
   friend class vtkTetMeshBuilder;
+  friend class vtkTetMeshCellExtraction;
+  friend class vtkTetMeshDefectSearch;
+  friend class vtkTetMeshFaceMatching;
+  friend class vtkTetMeshOrientation;
+  friend class vtkTetMeshScalarExtraction;
+  friend class vtkTetMeshSpatialOrder;
 
   std::vector<double> Points;
   std::vector<uint32_t> TetPoints;

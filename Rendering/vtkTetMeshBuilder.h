@@ -58,8 +58,8 @@
  * (more than two tetrahedra on one face) and overlapping tetrahedra (two on the same side of a
  * shared face: all but the first in input order on each side are left out, flagged
  * vtkTetMesh::Overlapping, see vtkTetMeshOverlapRule; decided at full builds only, like
- * duplicates and cracks), crack faces (boundary faces that overlap, in the same plane and facing the other
- * way, a boundary face made of coincident but distinct points), NaN/Inf scalars (their
+ * duplicates and cracks), crack faces (boundary faces that overlap, in the same plane and facing
+ * the other way, a boundary face made of coincident but distinct points), NaN/Inf scalars (their
  * tetrahedra flagged transparent) and duplicate points (exactly equal coordinates).
  *
  * Work is spread over threads with vtkSMPTools. Face matching buckets the faces by their
@@ -81,10 +81,12 @@
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
+#include <string> // For std::string
 
 class vtkDataArray;
 class vtkDataSet;
 class vtkTetMesh;
+class vtkTetMeshBuildState;
 
 class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTetMeshBuilder : public vtkObject
 {
@@ -185,9 +187,9 @@ public:
   ///@{
   /**
    * The builder keeps its scratch buffers (face matching, spatial sort, duplicate search:
-   * about 61 bytes per tetrahedron, 96 with spatial ordering) between builds, because allocating and first touching
-   * fresh memory costs more than the work done in it. ReleaseScratchMemory() frees them (a
-   * mapper may call it once the mesh is built, when topology changes are rare);
+   * about 61 bytes per tetrahedron, 96 with spatial ordering) between builds, because allocating
+   * and first touching fresh memory costs more than the work done in it. ReleaseScratchMemory()
+   * frees them (a mapper may call it once the mesh is built, when topology changes are rare);
    * GetScratchMemorySize() says how many bytes they hold.
    */
   void ReleaseScratchMemory();
@@ -223,8 +225,16 @@ private:
   vtkTetMeshBuilder(const vtkTetMeshBuilder&) = delete;
   void operator=(const vtkTetMeshBuilder&) = delete;
 
-  class vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
+  // The stages of Build(), in the order they run (each a private class of its own over the
+  // one build state: see vtkTetMeshBuildState.h).
+  bool UpdatePoints(vtkDataSet* input);
+  void BuildTopology(vtkDataSet* input);
+  bool ExtractCells(vtkDataSet* input, std::string& error);
+  void RunTopologyStages();
+  void UpdateScalars(vtkDataSet* input);
+  void FinishReport(vtkDataSet* input);
+
+  std::unique_ptr<vtkTetMeshBuildState> State;
 };
 
 #endif

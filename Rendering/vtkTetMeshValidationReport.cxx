@@ -66,6 +66,16 @@ void vtkTetMeshValidationReport::SetError(const std::string& message)
 }
 
 //------------------------------------------------------------------------------
+void vtkTetMeshValidationReport::ClearError()
+{
+  if (!this->ErrorMessage.empty())
+  {
+    this->ErrorMessage.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkTetMeshValidationReport::HasDefects() const
 {
   return this->NumberOfSplitCells > 0 || this->NumberOfIgnoredCells > 0 ||

@@ -140,10 +140,12 @@ public:
   ///@{
   /**
    * Usability. When the grid cannot be rendered at all (empty grid, no 3D cells, no scalars
-   * selected), Usable is false and ErrorMessage says why. SetError() marks the report unusable.
+   * selected), Usable is false and ErrorMessage says why. SetError() marks the report unusable,
+   * ClearError() usable again (the builder, when a rebuild mends what was wrong).
    */
   bool GetUsable() const { return this->ErrorMessage.empty(); }
   void SetError(const std::string& message);
+  void ClearError();
   const char* GetErrorMessage() const { return this->ErrorMessage.c_str(); }
   ///@}
 

@@ -66,7 +66,9 @@
 #include "vtkObject.h"
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 
+class vtkColorTransferFunction;
 class vtkDoubleArray;
+class vtkPiecewiseFunction;
 class vtkVolumeProperty;
 
 class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTetRayIntegrator : public vtkObject
@@ -155,6 +157,10 @@ protected:
 private:
   vtkTetRayIntegrator(const vtkTetRayIntegrator&) = delete;
   void operator=(const vtkTetRayIntegrator&) = delete;
+
+  // Whether copies of the property's functions evaluate exactly like them (an error if not).
+  bool CheckCopies(
+    vtkPiecewiseFunction* opacity, vtkColorTransferFunction* color, vtkPiecewiseFunction* gray);
 
   class vtkInternals;
   vtkInternals* Internals;

@@ -42,9 +42,9 @@
  * as they are; other 3D cells are split with vtkDataSetTriangleFilter; cells of lower dimension
  * are ignored), scalars chosen as VTK's mappers choose them (vtkAbstractMapper::GetScalars),
  * reduced to one scalar by the mapper's rule (vtkTetScalarSelection: the colour function's
- * VectorMode by default), a volume property (first component), a camera, the image size (aspect ratio = width / height), the volume's
- * matrix (lengths are measured in world coordinates, after it) and an optional opaque depth
- * buffer (window z in [0, 1] per pixel, 1 meaning no geometry).
+ * VectorMode by default), a volume property (first component), a camera, the image size (aspect
+ * ratio = width / height), the volume's matrix (lengths are measured in world coordinates, after
+ * it) and an optional opaque depth buffer (window z in [0, 1] per pixel, 1 meaning no geometry).
  *
  * The output is a vtkImageData of width x height pixels (row 0 at the bottom) with a float
  * "RGBA" point array (double on request) holding premultiplied colour and opacity, and an int
@@ -302,6 +302,12 @@ private:
   void operator=(const vtkTetReferenceRenderer&) = delete;
 
   vtkSetStringMacro(ArrayName);
+
+  // The steps of Render() before the rays are cast (see vtkTetReferenceRenderer.cxx for the
+  // private classes that do the work).
+  bool CheckInputs(vtkVolumeProperty* property, const float*& depth);
+  bool PrepareMesh(vtkVolumeProperty* property);
+  bool InitializeIntegrator(vtkVolumeProperty* property);
 
   class vtkInternals;
   vtkInternals* Internals;

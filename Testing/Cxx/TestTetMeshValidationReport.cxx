@@ -9,22 +9,14 @@
 
 =========================================================================*/
 // The validation report: counts, usability, summary text and copying.
+#include "TiledRayCastTestCheck.h"
+
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkTetMeshValidationReport.h"
 
 #include <iostream>
 #include <sstream>
-
-#define TRC_CHECK(cond)                                                                            \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::cerr << __FILE__ << ":" << __LINE__ << ": check failed: " #cond << std::endl;           \
-      return EXIT_FAILURE;                                                                         \
-    }                                                                                              \
-  } while (false)
 
 int TestTetMeshValidationReport(int, char*[])
 {

@@ -104,21 +104,7 @@ double Length(const double d[3])
   return std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
 }
 
-// Renders and returns the output (double precision).
-vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* input,
-  vtkVolumeProperty* property, vtkCamera* camera, int width, int height)
-{
-  renderer->SetInputData(input);
-  renderer->SetVolumeProperty(property);
-  renderer->SetCamera(camera);
-  renderer->SetImageSize(width, height);
-  renderer->DoublePrecisionOutputOn();
-  if (!renderer->Render())
-  {
-    return nullptr;
-  }
-  return renderer->GetOutput();
-}
+using trc::RenderImage;
 
 } // namespace
 

@@ -23,6 +23,7 @@
 // 0.3, 1 and 2). A reference with wrong units (the unit distance doubled) must exceed them:
 // checked below, so the comparison can fail.
 #include "TetReferenceTestUtilities.h"
+#include "TiledRayCastSharedScenes.h"
 
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -30,8 +31,6 @@
 #include "vtkTetReferenceRenderer.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
-#include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkVolume.h"
 #include "vtkWindowToImageFilter.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -62,34 +61,10 @@ int TestTetReferenceRendererBunyk(int argc, char* argv[])
     grid->GetPointData()->GetScalars()->GetRange(range);
     double bounds[6];
     grid->GetBounds(bounds);
-    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-
-    // Node positions inside the scalar range on purpose: Bunyk's partial pre-integration only
-    // splits segments at colour nodes (and the first opacity node), so the opacity is a single
-    // ramp across the range.
-    vtkNew<vtkColorTransferFunction> color;
-    color->AddRGBPoint(range[0], 0.1, 0.2, 1.0);
-    color->AddRGBPoint(0.5 * (range[0] + range[1]), 0.2, 1.0, 0.3);
-    color->AddRGBPoint(range[1], 1.0, 0.3, 0.1);
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(range[0], 0.05);
-    opacity->AddPoint(range[1], 0.9);
-    vtkNew<vtkVolumeProperty> property;
-    property->SetColor(color);
-    property->SetScalarOpacity(opacity);
-    property->SetScalarOpacityUnitDistance(diagonal / 15.0);
-
-    vtkNew<vtkUnstructuredGridVolumeRayCastMapper> mapper;
-    mapper->SetInputData(grid);
-    vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
-    mapper->SetRayIntegrator(integrator);
-    mapper->SetImageSampleDistance(1.0f);
-    mapper->AutoAdjustSampleDistancesOff();
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
+    // The scene of the comparison, shared with BenchmarkReferenceRenderer.
+    vtkSmartPointer<vtkVolumeProperty> property =
+      trcscene::MakeBunykProperty(range, trcscene::Diagonal(bounds));
+    vtkSmartPointer<vtkVolume> volume = trcscene::MakeBunykVolume(grid, property);
     vtkNew<vtkRenderer> renderer;
     renderer->AddVolume(volume);
     renderer->SetBackground(0, 0, 0);
@@ -148,7 +123,7 @@ int TestTetReferenceRendererBunyk(int argc, char* argv[])
     // The comparison must be able to fail: wrong units (twice the unit distance).
     vtkNew<vtkVolumeProperty> wrong;
     wrong->DeepCopy(property);
-    wrong->SetScalarOpacityUnitDistance(2.0 * diagonal / 15.0);
+    wrong->SetScalarOpacityUnitDistance(2.0 * property->GetScalarOpacityUnitDistance());
     reference->SetVolumeProperty(wrong);
     TRC_CHECK(reference->Render());
     vtkTetReferenceRenderer::EmulateRayCastImageDisplay(reference->GetOutput(), black, aligned);

@@ -24,16 +24,7 @@
 
 namespace
 {
-vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* input,
-  vtkVolumeProperty* property, vtkCamera* camera, int width, int height)
-{
-  renderer->SetInputData(input);
-  renderer->SetVolumeProperty(property);
-  renderer->SetCamera(camera);
-  renderer->SetImageSize(width, height);
-  renderer->DoublePrecisionOutputOn();
-  return renderer->Render() ? renderer->GetOutput() : nullptr;
-}
+using trc::RenderImage;
 
 double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
 {

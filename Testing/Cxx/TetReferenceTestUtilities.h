@@ -30,6 +30,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSmartPointer.h"
+#include "vtkTetReferenceRenderer.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 
@@ -38,7 +39,6 @@
 #include <functional>
 #include <iostream>
 #include <vector>
-
 
 // Checks |value - expected| <= bound and prints both on failure.
 #define TRC_CHECK_NEAR(value, expected, bound)                                                     \
@@ -62,6 +62,19 @@ enum class Split
   Five, // 5 tetrahedra per voxel, alternating parity (conforming)
   Six   // 6 Kuhn tetrahedra around the diagonal v0-v6 (conforming)
 };
+
+// Renders `input` with `renderer` (double-precision output) and returns the image, null when
+// the renderer refused.
+inline vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* input,
+  vtkVolumeProperty* property, vtkCamera* camera, int width, int height)
+{
+  renderer->SetInputData(input);
+  renderer->SetVolumeProperty(property);
+  renderer->SetCamera(camera);
+  renderer->SetImageSize(width, height);
+  renderer->DoublePrecisionOutputOn();
+  return renderer->Render() ? renderer->GetOutput() : nullptr;
+}
 
 // A grid of nx x ny x nz voxels of size h starting at origin, each split into tetrahedra.
 // Voxels for which skip(i, j, k) is true are left out (holes). The point scalars are

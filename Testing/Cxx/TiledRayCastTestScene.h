@@ -8,11 +8,14 @@
   See LICENSE for details.
 
 =========================================================================*/
-// Helpers shared by the mapper's image tests: reading the test meshes, a transfer function, and
+// Helpers shared by the mapper's image tests: reading the test meshes, a transfer function (the
+// ramp of TiledRayCastSharedScenes.h, which the benchmarks use too), and
 // the check of a rendered image against the exact reference renderer (every baseline image of
 // the project is also checked this way, with the bounds stated by each test).
 #ifndef TiledRayCastTestScene_h
 #define TiledRayCastTestScene_h
+
+#include "TiledRayCastSharedScenes.h"
 
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
@@ -111,46 +114,9 @@ inline vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(int argc, char* argv[], con
   return grid;
 }
 
-// A transfer function over [lo, hi] with a few nodes, varied colour and a moderate opacity:
-// the unit distance is a fraction of the mesh's size so that rays neither vanish nor saturate.
-inline vtkSmartPointer<vtkVolumeProperty> MakeProperty(
-  double lo, double hi, double unitDistance, bool narrowFeature = false)
-{
-  vtkNew<vtkColorTransferFunction> color;
-  color->AddRGBPoint(lo, 0.1, 0.3, 1.0);
-  color->AddRGBPoint(lo + 0.4 * (hi - lo), 0.2, 0.9, 0.4);
-  color->AddRGBPoint(lo + 0.7 * (hi - lo), 1.0, 0.9, 0.1);
-  color->AddRGBPoint(hi, 1.0, 0.2, 0.1);
-  vtkNew<vtkPiecewiseFunction> opacity;
-  opacity->AddPoint(lo, 0.05);
-  opacity->AddPoint(lo + 0.5 * (hi - lo), 0.3);
-  if (narrowFeature)
-  {
-    // A spike 4 % of the range wide: what vertex-classified mappers get wrong.
-    opacity->AddPoint(lo + 0.78 * (hi - lo), 0.3);
-    opacity->AddPoint(lo + 0.80 * (hi - lo), 1.0);
-    opacity->AddPoint(lo + 0.82 * (hi - lo), 0.3);
-  }
-  opacity->AddPoint(hi, 0.6);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(unitDistance);
-  return property;
-}
-
-// The property for a grid's active point scalars, with a unit distance of a fraction of its
-// bounding box diagonal.
-inline vtkSmartPointer<vtkVolumeProperty> MakePropertyFor(
-  vtkDataSet* grid, double fraction = 0.05, bool narrowFeature = false)
-{
-  double range[2] = { 0, 1 };
-  if (grid->GetPointData()->GetScalars())
-  {
-    grid->GetPointData()->GetScalars()->GetRange(range);
-  }
-  return MakeProperty(range[0], range[1], fraction * grid->GetLength(), narrowFeature);
-}
+// The ramp of the mapper's scenes, shared with the benchmarks (TiledRayCastSharedScenes.h).
+using trcscene::MakeProperty;
+using trcscene::MakePropertyFor;
 
 // Bounds on the difference between the window's image and the exact reference, in 1/255.
 // The defaults hold for partial pre-integration, exact up to float arithmetic and the 8-bit

@@ -1,0 +1,375 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTetMeshFaceMatching.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTetMeshFaceMatching.h"
+
+#include "vtkSMPTools.h"
+#include "vtkTetMesh.h"
+#include "vtkTetMeshBuildState.h"
+#include "vtkTetMeshOverlapRule.h"
+#include "vtkTetMeshValidationReport.h"
+
+#include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <numeric>
+#include <vector>
+
+namespace
+{
+constexpr uint32_t NoNeighbor = vtkTetMesh::NoNeighbor;
+using FaceEntry = vtkTetMeshBuildState::FaceEntry;
+
+inline bool FaceEntryLess(const FaceEntry& a, const FaceEntry& b)
+{
+  if (a.Mid != b.Mid)
+  {
+    return a.Mid < b.Mid;
+  }
+  if (a.Hi != b.Hi)
+  {
+    return a.Hi < b.Hi;
+  }
+  return a.Face < b.Face;
+}
+
+inline bool SameFace(const FaceEntry& a, const FaceEntry& b)
+{
+  return a.Mid == b.Mid && a.Hi == b.Hi;
+}
+
+// Calls f(face, lo, mid, hi) for the four faces of a tetrahedron, lo < mid < hi; faces with a
+// repeated point id (collapsed, zero area) are skipped.
+template <typename F>
+inline void ForEachSortedFace(const uint32_t* ids, uint32_t tet, F&& f)
+{
+  uint32_t v[4] = { ids[0], ids[1], ids[2], ids[3] };
+  uint32_t l[4] = { 0, 1, 2, 3 };
+  // Five compare-exchanges sort four values.
+  auto cx = [&](int a, int b)
+  {
+    if (v[b] < v[a])
+    {
+      std::swap(v[a], v[b]);
+      std::swap(l[a], l[b]);
+    }
+  };
+  cx(0, 1);
+  cx(2, 3);
+  cx(0, 2);
+  cx(1, 3);
+  cx(1, 2);
+  const uint32_t base = tet << 2;
+  // Face opposite the point at sorted position k holds the other three, still sorted.
+  if (v[1] != v[2] && v[2] != v[3])
+  {
+    f(base | l[0], v[1], v[2], v[3]);
+  }
+  if (v[0] != v[2] && v[2] != v[3])
+  {
+    f(base | l[1], v[0], v[2], v[3]);
+  }
+  if (v[0] != v[1] && v[1] != v[3])
+  {
+    f(base | l[2], v[0], v[1], v[3]);
+  }
+  if (v[0] != v[1] && v[1] != v[2])
+  {
+    f(base | l[3], v[0], v[1], v[2]);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Pairs the faces of one bucket (faces that share their smallest point id). Two
+// non-degenerate tetrahedra on one side of a face overlap (vtkTetMeshOverlapRule).
+class BucketPairing
+{
+public:
+  uint32_t* Neighbors;
+  const uint8_t* Sides; // bit i of a tetrahedron's byte: the parity of its face i
+  const uint8_t* Flags;
+  const uint32_t* InputCells;
+
+  bool Side(uint32_t f) const { return ((this->Sides[f >> 2] >> (f & 3u)) & 1u) != 0; }
+  bool Overlap(uint32_t a, uint32_t b) const
+  {
+    return this->Side(a) == this->Side(b) && !(this->Flags[a >> 2] & vtkTetMesh::Degenerate) &&
+      !(this->Flags[b >> 2] & vtkTetMesh::Degenerate);
+  }
+
+  // The common case: a small open-addressing table, slot -> 1 + index of the first face seen
+  // with that key, the top bit set once it is paired. Linear in the bucket's size, where a sort
+  // is not, and buckets of meshes numbered at random hold dozens of faces. False when a face
+  // has a third tetrahedron or two on one side: the caller then starts the bucket over.
+  bool PairByTable(const FaceEntry* first, const FaceEntry* last, std::vector<uint32_t>& table)
+  {
+    constexpr uint32_t Paired = 0x80000000u;
+    const ptrdiff_t n = last - first;
+    size_t size = 8;
+    while (size < 2 * static_cast<size_t>(n))
+    {
+      size <<= 1;
+    }
+    if (table.size() < size)
+    {
+      table.resize(size);
+    }
+    std::fill(table.begin(), table.begin() + size, 0u);
+    const size_t mask = size - 1;
+    for (ptrdiff_t k = 0; k < n; ++k)
+    {
+      const FaceEntry& e = first[k];
+      size_t h = ((e.Mid * 0x9e3779b1u) ^ (e.Hi * 0x85ebca77u)) & mask;
+      for (;;)
+      {
+        const uint32_t slot = table[h];
+        if (slot == 0)
+        {
+          table[h] = static_cast<uint32_t>(k + 1);
+          break;
+        }
+        const FaceEntry& o = first[(slot & ~Paired) - 1];
+        if (SameFace(o, e))
+        {
+          if ((slot & Paired) || this->Overlap(o.Face, e.Face))
+          {
+            return false;
+          }
+          this->Neighbors[o.Face] = e.Face;
+          this->Neighbors[e.Face] = o.Face;
+          table[h] = slot | Paired;
+          break;
+        }
+        h = (h + 1) & mask;
+      }
+    }
+    return true;
+  }
+
+  // A face shared by more than two tetrahedra or by two on one side (rare): the bucket over
+  // again, sorted, following vtkTetMeshOverlapRule. Returns its non-manifold faces.
+  vtkIdType PairSorted(FaceEntry* first, FaceEntry* last,
+    std::vector<vtkTetMeshOverlapRule::Entry>& rule, std::vector<uint32_t>& leftOut)
+  {
+    vtkIdType nonManifold = 0;
+    for (FaceEntry* e = first; e < last; ++e)
+    {
+      this->Neighbors[e->Face] = NoNeighbor;
+    }
+    std::sort(first, last, FaceEntryLess);
+    for (FaceEntry* run = first; run < last;)
+    {
+      FaceEntry* runEnd = run + 1;
+      while (runEnd < last && SameFace(*runEnd, *run))
+      {
+        ++runEnd;
+      }
+      const ptrdiff_t m = runEnd - run;
+      if (m == 2 && !this->Overlap(run[0].Face, run[1].Face))
+      {
+        this->Neighbors[run[0].Face] = run[1].Face;
+        this->Neighbors[run[1].Face] = run[0].Face;
+      }
+      else if (m >= 2)
+      {
+        nonManifold += m > 2 ? 1 : 0;
+        rule.clear();
+        for (FaceEntry* e = run; e < runEnd; ++e)
+        {
+          const uint32_t t = e->Face >> 2;
+          rule.push_back({ e->Face, this->Side(e->Face),
+            (this->Flags[t] & vtkTetMesh::Degenerate) != 0, this->InputCells[t] });
+        }
+        uint32_t link[2];
+        vtkTetMeshOverlapRule::Resolve(rule.data(), rule.size(), link, leftOut);
+        if (link[0] != NoNeighbor)
+        {
+          this->Neighbors[link[0]] = link[1];
+          this->Neighbors[link[1]] = link[0];
+        }
+      }
+      run = runEnd;
+    }
+    return nonManifold;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+void vtkTetMeshFaceMatching::MatchFaces(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  mesh->TetNeighbors.assign(4 * static_cast<size_t>(mesh->GetNumberOfTetrahedra()), NoNeighbor);
+  BucketFaces(state);
+  PairFaces(state);
+}
+
+//------------------------------------------------------------------------------
+// The counting sort of the faces by their smallest point id into state.FaceEntries (bucket v
+// from BucketStarts[v]), and the side of each face into state.FaceSides.
+void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const size_t numPoints = static_cast<size_t>(mesh->GetNumberOfPoints());
+  const uint32_t* tp = mesh->TetPoints.data();
+
+  // Per-block counters cost blocks * numPoints words: keep that below the faces themselves.
+  int blocks = vtkTetMeshBuildState::NumberOfBlocks(numTets);
+  const size_t maxBlocks =
+    std::max<size_t>(1, 4 * static_cast<size_t>(numTets) / std::max<size_t>(1, numPoints));
+  blocks = static_cast<int>(std::min<size_t>(static_cast<size_t>(blocks), maxBlocks));
+
+  std::vector<uint32_t>& counts = state.FaceCounts;
+  counts.assign(static_cast<size_t>(blocks) * numPoints, 0u);
+  vtkTetMeshBuildState::ForBlocks(numTets, blocks,
+    [&](int b, vtkIdType begin, vtkIdType end)
+    {
+      uint32_t* count = counts.data() + static_cast<size_t>(b) * numPoints;
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
+          [&](uint32_t, uint32_t lo, uint32_t, uint32_t) { ++count[lo]; });
+      }
+    });
+  // Exclusive prefix sums: bucket starts, and each block's write position inside them.
+  std::vector<uint64_t>& start = state.BucketStarts;
+  start.resize(numPoints + 1);
+  uint64_t running = 0;
+  for (size_t v = 0; v < numPoints; ++v)
+  {
+    start[v] = running;
+    for (int b = 0; b < blocks; ++b)
+    {
+      // Absolute positions: 4 * 2^30 faces at most, so they fit 32 bits.
+      uint32_t& c = counts[static_cast<size_t>(b) * numPoints + v];
+      const uint32_t n = c;
+      c = static_cast<uint32_t>(running);
+      running += n;
+    }
+  }
+  start[numPoints] = running;
+  if (state.FaceEntries.size() < running)
+  {
+    state.FaceEntries.resize(static_cast<size_t>(running));
+  }
+  FaceEntry* entries = state.FaceEntries.data();
+  // The side of each face (bit i of a tetrahedron's byte: FaceParity of face i), while its
+  // points are in cache: matching then tells overlapping pairs apart without reading them.
+  state.FaceSides.resize(static_cast<size_t>(numTets));
+  uint8_t* sides = state.FaceSides.data();
+  vtkTetMeshBuildState::ForBlocks(numTets, blocks,
+    [&](int b, vtkIdType begin, vtkIdType end)
+    {
+      uint32_t* offset = counts.data() + static_cast<size_t>(b) * numPoints;
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        uint8_t side = 0;
+        ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
+          [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
+          {
+            FaceEntry& e = entries[offset[lo]++];
+            e.Mid = mid;
+            e.Hi = hi;
+            e.Face = face;
+            side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
+          });
+        sides[t] = side;
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+// Each bucket paired on its own, in parallel; the tetrahedra the overlap rule leaves out are
+// gathered and left out at the end.
+void vtkTetMeshFaceMatching::PairFaces(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const size_t numPoints = static_cast<size_t>(mesh->GetNumberOfPoints());
+  FaceEntry* entries = state.FaceEntries.data();
+  const uint64_t* start = state.BucketStarts.data();
+  BucketPairing pairing;
+  pairing.Neighbors = mesh->TetNeighbors.data();
+  pairing.Sides = state.FaceSides.data();
+  pairing.Flags = mesh->TetFlags.data();
+  pairing.InputCells = mesh->TetInputCellIds.data();
+
+  std::atomic<vtkIdType> nonManifold(0);
+  std::vector<uint32_t> leftOut;
+  std::mutex leftOutMutex;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(numPoints), 2048,
+    [&](vtkIdType vb, vtkIdType ve)
+    {
+      BucketPairing local = pairing;
+      vtkIdType localNonManifold = 0;
+      std::vector<vtkTetMeshOverlapRule::Entry> rule;
+      std::vector<uint32_t> localLeftOut;
+      std::vector<uint32_t> table;
+      for (vtkIdType v = vb; v < ve; ++v)
+      {
+        FaceEntry* first = entries + start[v];
+        FaceEntry* last = entries + start[v + 1];
+        if (last - first >= 2 && !local.PairByTable(first, last, table))
+        {
+          localNonManifold += local.PairSorted(first, last, rule, localLeftOut);
+        }
+      }
+      nonManifold += localNonManifold;
+      if (!localLeftOut.empty())
+      {
+        std::lock_guard<std::mutex> lock(leftOutMutex);
+        leftOut.insert(leftOut.end(), localLeftOut.begin(), localLeftOut.end());
+      }
+    });
+  vtkTetMeshValidationReport* report = state.GetReport();
+  report->SetNumberOfNonManifoldFaces(nonManifold);
+  report->SetNumberOfOverlappingTetrahedra(
+    vtkTetMeshOverlapRule::Apply(leftOut, mesh->TetNeighbors.data(), mesh->TetFlags.data(),
+      static_cast<uint8_t>(vtkTetMesh::Overlapping)));
+}
+
+//------------------------------------------------------------------------------
+void vtkTetMeshFaceMatching::CollectBoundaryFaces(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numFaces = 4 * mesh->GetNumberOfTetrahedra();
+  const uint32_t* neighbors = mesh->TetNeighbors.data();
+  const uint8_t* flags = mesh->TetFlags.data();
+  // Faces of tetrahedra left out (vtkTetMeshOverlapRule) are no boundary: they are never entered.
+  auto boundary = [neighbors, flags](vtkIdType f)
+  { return neighbors[f] == NoNeighbor && !(flags[f >> 2] & vtkTetMesh::Overlapping); };
+  const int blocks = vtkTetMeshBuildState::NumberOfBlocks(numFaces);
+  std::vector<size_t> counts(static_cast<size_t>(blocks) + 1, 0);
+  vtkTetMeshBuildState::ForBlocks(numFaces, blocks,
+    [&](int b, vtkIdType begin, vtkIdType end)
+    {
+      size_t n = 0;
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        n += boundary(f) ? 1 : 0;
+      }
+      counts[b + 1] = n;
+    });
+  std::partial_sum(counts.begin(), counts.end(), counts.begin());
+  mesh->BoundaryFaces.resize(counts[blocks]);
+  uint32_t* out = mesh->BoundaryFaces.data();
+  vtkTetMeshBuildState::ForBlocks(numFaces, blocks,
+    [&](int b, vtkIdType begin, vtkIdType end)
+    {
+      size_t pos = counts[b];
+      for (vtkIdType f = begin; f < end; ++f)
+      {
+        if (boundary(f))
+        {
+          out[pos++] = static_cast<uint32_t>(f);
+        }
+      }
+    });
+}

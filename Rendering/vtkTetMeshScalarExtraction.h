@@ -1,0 +1,56 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTetMeshScalarExtraction.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTetMeshScalarExtraction
+ * @brief   private: vtkTetMeshBuilder's last stage, the scalars and the non-finite tetrahedra
+ *
+ * ReadScalars takes the scalar array the builder's settings select (vtkAbstractMapper's rule),
+ * reduces it to one value per point or cell (vtkTetScalarSelection::Extract), computes the
+ * finite range and maps cell scalars to the tetrahedra; it writes the count of NaN/Inf values
+ * into the report. FlagNonFiniteTets marks the tetrahedra those values touch.
+ */
+
+#ifndef vtkTetMeshScalarExtraction_h
+#define vtkTetMeshScalarExtraction_h
+
+#include "vtkType.h" // For vtkIdType
+
+#include <string> // For std::string
+
+class vtkDataArray;
+class vtkDataSet;
+class vtkTetMeshBuildState;
+class vtkTetMeshBuilder;
+
+class vtkTetMeshScalarExtraction
+{
+public:
+  /**
+   * The scalars `builder`'s settings select from `input`, into the mesh. False (and `error`)
+   * when there are none, or they do not fit the grid or the settings.
+   */
+  static bool ReadScalars(
+    vtkTetMeshBuildState& state, vtkDataSet* input, vtkTetMeshBuilder* builder, std::string& error);
+
+  /**
+   * Set or clear vtkTetMesh::NonFiniteScalars on every tetrahedron.
+   */
+  static void FlagNonFiniteTets(vtkTetMeshBuildState& state);
+
+private:
+  static std::string DescribeMissingScalars(vtkTetMeshBuilder* builder);
+  static bool CheckArray(vtkDataArray* array, vtkIdType expected, int cellFlag, bool magnitude,
+    int component, std::string& error);
+  static void StoreValues(vtkTetMeshBuildState& state, int cellFlag);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTetMeshScalarExtraction.h

@@ -1,0 +1,127 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTetMeshSpatialOrder.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTetMeshSpatialOrder.h"
+
+#include "vtkSMPTools.h"
+#include "vtkTetMesh.h"
+#include "vtkTetMeshBuildState.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace
+{
+//------------------------------------------------------------------------------
+// Spreads the low 11 bits of v so that they occupy every third bit.
+inline uint64_t SpreadBits3(uint64_t v)
+{
+  v &= 0x7ffu;
+  v = (v | (v << 16)) & 0x0000ff0000ffull;
+  v = (v | (v << 8)) & 0x00f00f00f00full;
+  v = (v | (v << 4)) & 0x0c30c30c30c3ull;
+  v = (v | (v << 2)) & 0x249249249249ull;
+  return v;
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkTetMeshSpatialOrder::Sort(vtkTetMeshBuildState& state)
+{
+  ComputeKeys(state);
+  SortKeys(state);
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const uint32_t* tp = mesh->TetPoints.data();
+  const std::vector<uint64_t>& keys = state.SortKeys;
+  std::vector<uint32_t>& tetPoints = state.SortTetPoints;
+  std::vector<uint32_t>& cellIds = state.SortCellIds;
+  tetPoints.resize(mesh->TetPoints.size());
+  cellIds.resize(mesh->TetInputCellIds.size());
+  vtkSMPTools::For(0, numTets, 16384,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const size_t old = static_cast<size_t>(keys[t] & ((uint64_t(1) << 30) - 1));
+        std::copy(tp + 4 * old, tp + 4 * old + 4, tetPoints.begin() + 4 * t);
+        cellIds[t] = mesh->TetInputCellIds[old];
+      }
+    });
+  mesh->TetPoints.swap(tetPoints);
+  mesh->TetInputCellIds.swap(cellIds);
+}
+
+//------------------------------------------------------------------------------
+// One 64-bit key per tetrahedron: 33 bits of Morton code above the 30-bit tetrahedron id.
+void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const double* p = mesh->Points.data();
+  const uint32_t* tp = mesh->TetPoints.data();
+  double origin[3], scale[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    origin[c] = mesh->Bounds[2 * c];
+    const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
+    scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
+  }
+  std::vector<uint64_t>& keys = state.SortKeys;
+  keys.resize(static_cast<size_t>(numTets));
+  vtkSMPTools::For(0, numTets, 16384,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        uint64_t code = 0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double centroid = 0.25 *
+            (p[3 * tp[4 * t] + c] + p[3 * tp[4 * t + 1] + c] + p[3 * tp[4 * t + 2] + c] +
+              p[3 * tp[4 * t + 3] + c]);
+          const double q = std::min(2047.0, std::max(0.0, (centroid - origin[c]) * scale[c]));
+          code |= SpreadBits3(static_cast<uint64_t>(q)) << c;
+        }
+        keys[t] = (code << 30) | static_cast<uint64_t>(t);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+// Three stable counting passes of 11 bits over the code (least significant first): linear,
+// and ties stay in input order.
+void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state)
+{
+  std::vector<uint64_t>& keys = state.SortKeys;
+  std::vector<uint64_t>& scratch = state.SortScratch;
+  scratch.resize(keys.size());
+  for (int shift = 30; shift < 63; shift += 11)
+  {
+    size_t position[2048] = { 0 };
+    for (uint64_t key : keys)
+    {
+      ++position[(key >> shift) & 2047];
+    }
+    size_t running = 0;
+    for (size_t& slot : position)
+    {
+      const size_t n = slot;
+      slot = running;
+      running += n;
+    }
+    for (uint64_t key : keys)
+    {
+      scratch[position[(key >> shift) & 2047]++] = key;
+    }
+    keys.swap(scratch);
+  }
+}

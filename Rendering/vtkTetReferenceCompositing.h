@@ -1,0 +1,59 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTetReferenceCompositing.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTetReferenceCompositing
+ * @brief   private: vtkTetReferenceRenderer's compositing, along a ray and over a background
+ *
+ * CompositeRay integrates the tetrahedra a ray crosses front to back (each segment exactly,
+ * vtkTetRayIntegrator) into premultiplied RGBA. The image functions are the implementations
+ * of vtkTetReferenceRenderer's public static helpers (compositing the RGBA image over a
+ * background, the 8-bit conversion, the emulation of vtkUnstructuredGridVolumeRayCastMapper's
+ * display, the image comparison): see vtkTetReferenceRenderer.h for what each does.
+ */
+
+#ifndef vtkTetReferenceCompositing_h
+#define vtkTetReferenceCompositing_h
+
+#include "vtkTetReferenceRayCaster.h" // For vtkTetReferenceRayCaster::Hit
+
+#include <vector> // For std::vector
+
+class vtkImageData;
+class vtkTetRayIntegrator;
+
+class vtkTetReferenceCompositing
+{
+public:
+  /**
+   * Front-to-back compositing of `hits` (sorted; those of `transparent` tetrahedra skipped) into
+   * premultiplied RGBA; `unitLength` is the length of a unit of the ray parameter. Stops once
+   * what lies behind can change no value.
+   */
+  static void CompositeRay(const std::vector<vtkTetReferenceRayCaster::Hit>& hits,
+    const std::vector<unsigned char>& transparent, vtkTetRayIntegrator* integrator,
+    double unitLength, double rgba[4]);
+
+  ///@{
+  /**
+   * vtkTetReferenceRenderer's image helpers (same names, same arguments).
+   */
+  static void CompositeOverBackground(
+    vtkImageData* rgba, const double background[3], vtkImageData* output);
+  static void ConvertToUnsignedChar(
+    vtkImageData* rgba, const double background[3], vtkImageData* output);
+  static void EmulateRayCastImageDisplay(
+    vtkImageData* rgba, const double background[3], vtkImageData* output);
+  static int CompareImages(vtkImageData* a, vtkImageData* b, double stats[3]);
+  ///@}
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTetReferenceCompositing.h
