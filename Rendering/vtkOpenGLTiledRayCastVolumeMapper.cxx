@@ -59,6 +59,7 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkUnstructuredGridPartialPreIntegration.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
@@ -73,6 +74,7 @@
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
 #include "vtkTiledRayCastPaperLayout.h"
+#include "vtkTiledRayCastBlendModes.h"
 #include "vtkTiledRayCastPartialPreIntegration.h"
 #include "vtkTiledRayCastPreIntegration2D.h"
 #include "vtkTiledRayCastPreIntegration3D.h"
@@ -400,6 +402,7 @@ public:
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
   bool WarnedClippingPlanes = false;
+  double OpacityUnitDistance = 1; // the property's, for the blend modes
   bool WarnedShading = false;
   bool WarnedGradientOpacity = false;
   bool WarnedStoppedRays = false;
@@ -420,6 +423,14 @@ public:
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
+  // The integration the shaders do: the mapper's setting, or partial pre-integration's node list
+  // under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates it).
+  int IntegrationMode() const
+  {
+    return this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND
+      ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION
+      : this->Self->GetIntegrationMode();
+  }
   // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
   // then marks the volume with itself as a render pass.
   static bool InsideVolumetricPeeling(vtkVolume* volume);
@@ -443,6 +454,7 @@ public:
   // Uniforms of the boundary-face passes: exact coverage of pixel centres (see the vertex shader).
   void SetCoverageUniforms(vtkShaderProgram* program) override;
   void SetIntegrationUniforms(vtkShaderProgram* program) override;
+  void SetBlendUniforms(vtkShaderProgram* program);
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
@@ -963,9 +975,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->TransferFunction->Update(property, this->ScalarRange);
+  this->OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0);
 
   vtkIdType uploaded = 0;
-  const int mode = self->GetIntegrationMode();
+  const int mode = this->IntegrationMode();
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
     if (this->TransferFunction->GetMTime() > this->UploadedNodesTime)
@@ -1075,7 +1088,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   const bool paper = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
-  const int mode = self->GetIntegrationMode();
+  const int mode = this->IntegrationMode();
 
   std::string layoutCode = paper ? vtkTiledRayCastPaperLayout : vtkTiledRayCastCompactLayout;
   if (!paper && this->HasCellScalars)
@@ -1092,10 +1105,19 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
     : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
           ? vtkTiledRayCastPreIntegration2D
           : vtkTiledRayCastPartialPreIntegration);
+  std::string integrationCode = integration;
+  if (self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    // The blend modes evaluate the partial pre-integration's node list and bring their own
+    // trcIntegrate.
+    vtkShaderProgram::Substitute(
+      integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
+    integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
+  }
   std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Common::Dec", vtkTiledRayCastCommonFS },
     { "//TRC::Layout::Dec", layoutCode },
-    { "//TRC::Integration::Dec", integration },
+    { "//TRC::Integration::Dec", integrationCode },
   };
   if (this->UseCompute)
   {
@@ -1478,7 +1500,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
       textures.push_back(this->Entry[q]);
     }
   }
-  const int mode = this->Self->GetIntegrationMode();
+  const int mode = this->IntegrationMode();
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
     textures.push_back(this->NodeTexture);
@@ -1558,15 +1580,35 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderP
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShaderProgram* p)
+{
+  // Scalars and transfer-function nodes are shifted on the GPU (vtkTetMesh::GetScalarShift).
+  const double shift = vtkTetMesh::ComputeScalarShift(this->ScalarRange);
+  const float range[2] = { static_cast<float>(this->ScalarRange[0] - shift),
+    static_cast<float>(this->ScalarRange[1] - shift) };
+  const double* average = this->Self->GetAverageIPScalarRange();
+  const float averageRange[2] = { static_cast<float>(std::max(average[0] - shift, -3.0e38)),
+    static_cast<float>(std::min(average[1] - shift, 3.0e38)) };
+  p->SetUniformi("in_blendMode", this->Self->GetBlendMode());
+  p->SetUniform2f("in_blendScalarRange", range);
+  p->SetUniform2f("in_averageRange", averageRange);
+  p->SetUniformf("in_opacityUnitDistance", static_cast<float>(this->OpacityUnitDistance));
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
-  const int mode = this->Self->GetIntegrationMode();
+  const int mode = this->IntegrationMode();
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
     p->SetUniformi("in_transferFunction", this->NodeTexture->GetTextureUnit());
     p->SetUniformi("in_transferFunctionNodes", this->TransferFunction->GetNumberOfNodes());
     p->SetUniformi("in_psiTable", this->PsiTexture->GetTextureUnit());
     p->SetUniformf("in_psiTableSize", static_cast<float>(this->PsiTexture->GetWidth()));
+    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+    {
+      this->SetBlendUniforms(p);
+    }
     return;
   }
   vtkTiledRayCastPreIntegrationTable* table = this->Table;
@@ -2171,10 +2213,18 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                     "mapper). Make that geometry opaque, or render it in another renderer.");
     impl->WarnedTranslucentGeometry = true;
   }
-  if (this->BlendMode != vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND)
+  if (this->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
+    this->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
   {
-    impl->ReportError("Only composite blending is supported (BlendMode is " +
-      std::to_string(this->BlendMode) + "). Nothing is drawn.");
+    impl->ReportError("Blend mode " + std::to_string(this->BlendMode) +
+      " is not supported (composite, maximum, minimum and average intensity, additive are). "
+      "Nothing is drawn.");
+    return;
+  }
+  if (this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !impl->UseCompute)
+  {
+    impl->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
+                      "Nothing is drawn.");
     return;
   }
   vtkVolumeProperty* property = vol->GetProperty();

@@ -28,6 +28,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetRayIntegrator.h"
+#include "vtkTetReferenceBlending.h"
 #include "vtkTetReferenceCompositing.h"
 #include "vtkTetReferenceMesh.h"
 #include "vtkTetReferenceRayCaster.h"
@@ -183,13 +184,15 @@ public:
 
   // Every pixel's ray cast and composited into `rgba` (float or double, the other null) and
   // `counts` (the tetrahedra each ray crossed).
-  void CastRays(const PixelRays& rays, vtkTetRayIntegrator* integrator, float* rgbaFloat,
-    double* rgbaDouble, int* counts);
+  void CastRays(const PixelRays& rays, vtkTetRayIntegrator* integrator,
+    const vtkTetReferenceBlending::Settings& blending, float* rgbaFloat, double* rgbaDouble,
+    int* counts);
 };
 
 //------------------------------------------------------------------------------
 void vtkTetReferenceRenderer::vtkInternals::CastRays(const PixelRays& rays,
-  vtkTetRayIntegrator* integrator, float* rgbaFloat, double* rgbaDouble, int* counts)
+  vtkTetRayIntegrator* integrator, const vtkTetReferenceBlending::Settings& blending,
+  float* rgbaFloat, double* rgbaDouble, int* counts)
 {
   const int width = rays.Width;
   vtkSMPTools::For(0, rays.Height, 1,
@@ -210,8 +213,16 @@ void vtkTetReferenceRenderer::vtkInternals::CastRays(const PixelRays& rays,
             vtkTetReferenceRayCaster::CastRay(this->Mesh, origin, d, zmin, zmax, hits);
             counts[pixel] = static_cast<int>(hits.size());
             const double unitLength = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            vtkTetReferenceCompositing::CompositeRay(
-              hits, this->Mesh.Transparent, integrator, unitLength, result);
+            if (blending.Mode == 0)
+            {
+              vtkTetReferenceCompositing::CompositeRay(
+                hits, this->Mesh.Transparent, integrator, unitLength, result);
+            }
+            else
+            {
+              vtkTetReferenceBlending::BlendRay(
+                hits, this->Mesh.Transparent, blending, unitLength, result);
+            }
           }
           for (int k = 0; k < 4; ++k)
           {
@@ -465,7 +476,23 @@ int vtkTetReferenceRenderer::Render()
   vtkNew<vtkIntArray> counts;
   counts->SetName("NumberOfTets");
   counts->SetNumberOfTuples(numPixels);
-  in.CastRays(rays, this->Integrator,
+  // The blend mode's settings: the data's scalar range normalises the scalar, as the mapper's.
+  vtkTetReferenceBlending::Settings blending;
+  blending.Mode = this->BlendMode;
+  blending.Property = property;
+  blending.AverageRange[0] = this->AverageIPScalarRange[0];
+  blending.AverageRange[1] = this->AverageIPScalarRange[1];
+  blending.ScalarRange[0] = VTK_DOUBLE_MAX;
+  blending.ScalarRange[1] = VTK_DOUBLE_MIN;
+  for (double v : in.Mesh.Scalars)
+  {
+    if (std::isfinite(v))
+    {
+      blending.ScalarRange[0] = std::min(blending.ScalarRange[0], v);
+      blending.ScalarRange[1] = std::max(blending.ScalarRange[1], v);
+    }
+  }
+  in.CastRays(rays, this->Integrator, blending,
     this->DoublePrecisionOutput ? nullptr : vtkFloatArray::SafeDownCast(rgba)->GetPointer(0),
     this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr,
     counts->GetPointer(0));
@@ -639,6 +666,9 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Volume: " << this->Volume << "\n";
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
+  os << indent << "BlendMode: " << this->BlendMode << "\n";
+  os << indent << "AverageIPScalarRange: " << this->AverageIPScalarRange[0] << " "
+     << this->AverageIPScalarRange[1] << "\n";
   os << indent << "SampleOffset: " << this->SampleOffset[0] << ", " << this->SampleOffset[1]
      << "\n";
   os << indent << "DoublePrecisionOutput: " << this->DoublePrecisionOutput << "\n";

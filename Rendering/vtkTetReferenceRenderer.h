@@ -166,6 +166,18 @@ public:
 
   ///@{
   /**
+   * Blend mode (vtkVolumeMapper's values: composite, the default; maximum, minimum and average
+   * intensity; additive) and the scalar range averaged, as vtkTiledRayCastVolumeMapper defines
+   * them (vtkTetReferenceBlending computes them from the property's own functions).
+   */
+  vtkSetMacro(BlendMode, int);
+  vtkGetMacro(BlendMode, int);
+  vtkSetVector2Macro(AverageIPScalarRange, double);
+  vtkGetVectorMacro(AverageIPScalarRange, double, 2);
+  ///@}
+
+  ///@{
+  /**
    * Optional clipping planes in world coordinates, as a mapper's (vtkAbstractMapper): each
    * keeps the half-space its normal points into, and every ray is cut exactly to the
    * intersection of the kept half-spaces. Any number of planes.
@@ -286,6 +298,8 @@ protected:
   vtkVolume* Volume;
   vtkFloatArray* OpaqueDepth;
   vtkPlaneCollection* ClippingPlanes = nullptr;
+  int BlendMode = 0;
+  double AverageIPScalarRange[2] = { -1.0e300, 1.0e300 };
   double SampleOffset[2];
   vtkTypeBool DoublePrecisionOutput;
   vtkImageData* Output;

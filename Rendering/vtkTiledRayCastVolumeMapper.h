@@ -56,6 +56,7 @@
 
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeMapper.h"
+#include "vtkVolumeMapper.h" // For the blend modes' values
 
 class vtkDataObjectTree;
 class vtkRenderWindow;
@@ -226,6 +227,22 @@ public:
 
   ///@{
   /**
+   * Blend modes (vtkVolumeMapper's values; vtkUnstructuredGridVolumeMapper names the first
+   * two): composite (default), maximum and minimum intensity (the transfer function at the
+   * extreme scalar of the ray, colour times opacity), average intensity (the mean of opacity
+   * times the scalar normalised to the data's range, over the length where the scalar lies in
+   * AverageIPScalarRange, gray and opaque) and additive (that integral per scalar opacity unit
+   * distance, gray, clamped to 1). Exact along each linear segment; the compute pipeline only.
+   */
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToAverageIntensity() { this->SetBlendMode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND); }
+  void SetBlendModeToAdditive() { this->SetBlendMode(vtkVolumeMapper::ADDITIVE_BLEND); }
+  vtkSetVector2Macro(AverageIPScalarRange, double);
+  vtkGetVectorMacro(AverageIPScalarRange, double, 2);
+  ///@}
+
+  ///@{
+  /**
    * A ray stops once its accumulated opacity reaches this value (early ray termination). 1
    * disables early termination. The colour left out is at most 1 - this value. Default 0.999.
    */
@@ -371,6 +388,7 @@ protected:
   int OcclusionQueryInterval = 4;
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
+  double AverageIPScalarRange[2] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MAX };
   int MaximumNumberOfPassesPerLayer = 1000000;
   int VectorMode = DEFAULT;
   int VectorComponent = 0;

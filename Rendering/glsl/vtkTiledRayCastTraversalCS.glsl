@@ -181,6 +181,10 @@ void main()
     {
       atomicAdd(trcGroupStopped, 1u);
     }
+#ifdef TRC_BLEND_MODE
+    // The blend modes accumulate something else than colour (vtkTiledRayCastBlendModes.glsl).
+    color = trcFinishRay(color);
+#endif
   }
   if (inImage)
   {

@@ -19,6 +19,9 @@
 //    along the analytic ray on a sample of pixels.
 #include "TetReferenceTestUtilities.h"
 
+#include "vtkColorTransferFunction.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkVolumeProperty.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
@@ -372,5 +375,109 @@ int TestTetReferenceRendererAnalytic(int, char*[])
   }
 
   std::cout << "TestTetReferenceRendererAnalytic passed" << std::endl;
+  // 4. Blend modes on one tet with a linear field and linear transfer functions, against closed
+  //    forms along each pixel's chord: the scalar is linear along it, from s0 to s1; maximum
+  //    and minimum intensity take the functions at max(s0, s1) and min(s0, s1); average and
+  //    additive integrate opacity(s) * normalised s, a product of two linear functions of s
+  //    (mean (f0 g0 + f1 g1) / 3 + (f0 g1 + f1 g0) / 6 over the chord).
+  {
+    const double v[4][3] = { { -1, -1, -1 }, { 1.2, -0.8, -0.9 }, { -0.7, 1.1, -1 },
+      { -0.9, -0.8, 1.3 } };
+    const double g[3] = { 0.7, -0.4, 0.9 };
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkDoubleArray> scalars;
+    double smin = 1e300, smax = -1e300;
+    for (int q = 0; q < 4; ++q)
+    {
+      points->InsertNextPoint(v[q]);
+      const double value = 2.0 + g[0] * v[q][0] + g[1] * v[q][1] + g[2] * v[q][2];
+      scalars->InsertNextValue(value);
+      smin = std::min(smin, value);
+      smax = std::max(smax, value);
+    }
+    vtkNew<vtkUnstructuredGrid> tet;
+    tet->SetPoints(points);
+    const vtkIdType ids[4] = { 0, 1, 2, 3 };
+    tet->InsertNextCell(VTK_TETRA, 4, ids);
+    tet->GetPointData()->SetScalars(scalars);
+    vtkNew<vtkColorTransferFunction> colour;
+    colour->AddRGBPoint(smin, 0.1, 0.8, 0.3);
+    colour->AddRGBPoint(smax, 0.9, 0.2, 0.6);
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(smin, 0.1);
+    opacity->AddPoint(smax, 0.7);
+    vtkNew<vtkVolumeProperty> property;
+    property->SetColor(colour);
+    property->SetScalarOpacity(opacity);
+    property->SetScalarOpacityUnitDistance(0.8);
+    auto field = [&](const double p[3]) { return 2.0 + g[0] * p[0] + g[1] * p[1] + g[2] * p[2]; };
+    auto normalised = [&](double s) { return (s - smin) / (smax - smin); };
+    const double focal[3] = { 0, 0, 0 }, dir[3] = { 0.3, -0.5, -1.0 }, up[3] = { 0, 1, 0 };
+    auto camera = trc::MakeCamera(focal, dir, up, 6.0, false, 40.0, 1.0, 20.0);
+    for (int mode = 1; mode <= 4; ++mode)
+    {
+      vtkNew<vtkTetReferenceRenderer> renderer;
+      renderer->SetBlendMode(mode);
+      vtkImageData* image = RenderImage(renderer, tet, property, camera, 40, 40);
+      TRC_CHECK(image);
+      int covered = 0;
+      for (int j = 0; j < 40; ++j)
+      {
+        for (int i = 0; i < 40; ++i)
+        {
+          double nearP[3], farP[3], d[3];
+          trc::PixelRay(camera, 40, 40, i, j, nearP, farP);
+          for (int k = 0; k < 3; ++k)
+          {
+            d[k] = farP[k] - nearP[k];
+          }
+          double t0, t1, rgba[4];
+          trc::Pixel(image, i, j, rgba);
+          if (!ClipTetrahedron(v, nearP, d, t0, t1) || (t1 - t0) * Length(d) < 1e-6)
+          {
+            continue;
+          }
+          ++covered;
+          double p0[3], p1[3];
+          for (int k = 0; k < 3; ++k)
+          {
+            p0[k] = nearP[k] + t0 * d[k];
+            p1[k] = nearP[k] + t1 * d[k];
+          }
+          const double s0 = field(p0), s1 = field(p1);
+          double expected[4];
+          if (mode <= 2)
+          {
+            const double s = mode == 1 ? std::max(s0, s1) : std::min(s0, s1);
+            double c[3];
+            colour->GetColor(s, c);
+            const double a = opacity->GetValue(s);
+            expected[0] = c[0] * a;
+            expected[1] = c[1] * a;
+            expected[2] = c[2] * a;
+            expected[3] = a;
+          }
+          else
+          {
+            const double f0 = opacity->GetValue(s0), f1 = opacity->GetValue(s1);
+            const double n0 = normalised(s0), n1 = normalised(s1);
+            const double mean = (f0 * n0 + f1 * n1) / 3.0 + (f0 * n1 + f1 * n0) / 6.0;
+            const double chord = (t1 - t0) * Length(d);
+            const double gray =
+              std::min(1.0, mode == 3 ? mean : mean * chord / property->GetScalarOpacityUnitDistance());
+            expected[0] = expected[1] = expected[2] = gray;
+            expected[3] = 1.0;
+          }
+          for (int k = 0; k < 4; ++k)
+          {
+            TRC_CHECK_NEAR(rgba[k], expected[k], 1e-9);
+          }
+        }
+      }
+      TRC_CHECK(covered > 50);
+    }
+  }
+
   return EXIT_SUCCESS;
 }

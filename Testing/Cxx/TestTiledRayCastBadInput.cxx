@@ -163,8 +163,15 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
            m->SetMaximumTextureSize(64);
          }) &&
     ok;
-  ok = Refused("maximum intensity", spx, "composite",
-         [](vtkTiledRayCastVolumeMapper* m) { m->SetBlendModeToMaximumIntensity(); }) &&
+  ok = Refused("isosurface blend mode", spx, "not supported",
+         [](vtkTiledRayCastVolumeMapper* m) { m->SetBlendMode(5); }) &&
+    ok;
+  ok = Refused("maximum intensity, fragment pipeline", spx, "compute pipeline",
+         [](vtkTiledRayCastVolumeMapper* m)
+         {
+           m->SetBlendModeToMaximumIntensity();
+           m->SetPipelineToFragment();
+         }) &&
     ok;
 
   // Seven clipping planes: the first six clip (as in VTK's OpenGL mappers), and the error says

@@ -32,6 +32,8 @@
 #include "vtkSphereSource.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTiledRayCastStatistics.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
 
 #include <cstring>
 #include <functional>
@@ -131,6 +133,37 @@ bool AllRaysStartInside(Scene& t)
 // length. The exact integral is 119/255 of blue (an independent quadrature gave the same);
 // partial pre-integration read its Psi table transposed until a later version and rendered 94,
 // and the 2D table's opacity correction, stretched over the whole slab, rendered 148.
+// bluntfin under a blend mode other than compositing, against the reference's own evaluation of
+// the property's functions (vtkTetReferenceBlending). The average takes the upper 80 % of the
+// scalar range only (AverageIPScalarRange); both gray modes get an opacity ramp to 1 and a unit
+// distance of a tenth of the mesh's size, so that their images span the gray levels.
+bool LoadBlended(Scene& s, int argc, char* argv[], int mode)
+{
+  if (!s.Load(argc, argv, "bluntfin_tets.vtu", 0.1))
+    return false;
+  s.Mapper->SetBlendMode(mode);
+  double range[2];
+  s.Grid->GetPointData()->GetScalars()->GetRange(range);
+  s.Mapper->SetAverageIPScalarRange(range[0] + 0.2 * (range[1] - range[0]), range[1]);
+  if (mode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND || mode == vtkVolumeMapper::ADDITIVE_BLEND)
+  {
+    // Gray images of opacity times the normalised scalar: an opacity ramp to 1 shows them.
+    vtkPiecewiseFunction* opacity = s.Volume->GetProperty()->GetScalarOpacity();
+    opacity->RemoveAllPoints();
+    opacity->AddPoint(range[0], 0.2);
+    opacity->AddPoint(range[0] + 0.3 * (range[1] - range[0]), 0.9);
+    opacity->AddPoint(range[1], 1.0);
+    s.Volume->GetProperty()->SetScalarOpacityUnitDistance(0.1 * s.Grid->GetLength());
+  }
+  s.View(30, 20);
+  s.Check = [](Scene& t)
+  {
+    return RenderedWith(t, "Compute") &&
+      Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
+  };
+  return true;
+}
+
 // A transformed spx cut by two clipping planes (world coordinates): an oblique one through the
 // middle, where rays start inside the mesh, and one that trims a side. Then checks that planes
 // which leave nothing of the mesh draw nothing, and that planes which clip nothing change
@@ -494,6 +527,14 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
+    { "maximum", [](Scene& s, int argc, char* argv[])
+      { return LoadBlended(s, argc, argv, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND); } },
+    { "minimum", [](Scene& s, int argc, char* argv[])
+      { return LoadBlended(s, argc, argv, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); } },
+    { "average", [](Scene& s, int argc, char* argv[])
+      { return LoadBlended(s, argc, argv, vtkVolumeMapper::AVERAGE_INTENSITY_BLEND); } },
+    { "additive", [](Scene& s, int argc, char* argv[])
+      { return LoadBlended(s, argc, argv, vtkVolumeMapper::ADDITIVE_BLEND); } },
     { "clipped", LoadClipped },
     { "clipped_fragment",
       [](Scene& s, int argc, char* argv[])

@@ -184,6 +184,8 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   reference->SetVolume(volume);
   reference->SetOpaqueDepth(depth);
   reference->SetClippingPlanes(mapper->GetClippingPlanes());
+  reference->SetBlendMode(mapper->GetBlendMode());
+  reference->SetAverageIPScalarRange(mapper->GetAverageIPScalarRange());
   if (configure)
   {
     configure(reference);
