@@ -11,6 +11,7 @@
 #include "vtkTetRayIntegrator.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDiscretizableColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
@@ -213,6 +214,19 @@ struct FunctionSet
     copy->SetUseBelowRangeColor(f->GetUseBelowRangeColor());
     copy->SetAboveRangeColor(f->GetAboveRangeColor());
     copy->SetUseAboveRangeColor(f->GetUseAboveRangeColor());
+    // VTK 9.1's DeepCopy of a discretizable map leaves out its discretization (a copy of
+    // ParaView's default map would be smooth) and its lookup table is built on demand.
+    auto* discrete = vtkDiscretizableColorTransferFunction::SafeDownCast(f);
+    auto* discreteCopy = vtkDiscretizableColorTransferFunction::SafeDownCast(copy);
+    if (discrete && discreteCopy)
+    {
+      discreteCopy->SetDiscretize(discrete->GetDiscretize());
+      discreteCopy->SetNumberOfValues(discrete->GetNumberOfValues());
+      discreteCopy->SetIndexedLookup(discrete->GetIndexedLookup());
+      discreteCopy->SetUseLogScale(discrete->GetUseLogScale());
+      discrete->Build();
+      discreteCopy->Build();
+    }
     return copy;
   }
 
