@@ -29,9 +29,16 @@ export PYTHONPATH="$root/usr/lib/python3/dist-packages"
 for mesh in "${meshes[@]}"; do
   for mapper in "Tiled ray cast" "Projected tetra"; do
     name="$(basename "$mesh" .vtu)_${mapper// /_}_$size"
-    xvfb-run -a -s "-screen 0 $((size + 256))x$((size + 256))x24" "$root/usr/bin/pvbatch" \
-      "$here/ParaView/Testing/pvbatch_render.py" --plugin "$plugin" --mesh "$mesh" \
-      --mapper "$mapper" --size "$size" --frames "$frames" --output "$out/$name" 2>&1 |
-      grep -E "^rendered|^statistics" || true
+    # Retried: two xvfb-run -a started at once (another suite's) may pick the same display.
+    for attempt in 1 2 3; do
+      if xvfb-run -a -s "-screen 0 $((size + 256))x$((size + 256))x24" "$root/usr/bin/pvbatch" \
+        "$here/ParaView/Testing/pvbatch_render.py" --plugin "$plugin" --mesh "$mesh" \
+        --mapper "$mapper" --size "$size" --frames "$frames" --output "$out/$name" \
+        >"$out/$name.log" 2>&1; then
+        grep -E "^rendered|^statistics" "$out/$name.log"
+        break
+      fi
+      echo "($name: pvbatch failed, attempt $attempt: $out/$name.log)"
+    done
   done
 done
