@@ -10,8 +10,10 @@ starts `xvfb-run -a pvbatch pvbatch_render.py` from the private ParaView root
                  transfer function, with the scene tests' bounds; Projected tetra's difference
                  printed for comparison
   --case mixed   a mixed-cell mesh (a clipped Wavelet: hexahedra, wedges, pyramids, tetrahedra)
-                 with the discretized map: no warning, against the reference of the same mesh
-                 split into tetrahedra as ParaView splits it
+                 with the discretized map, coloured by component Y of a vector array (the
+                 VectorMode/VectorComponent the representation forwards): no warning, against
+                 the reference of the same mesh split into tetrahedra as ParaView splits it, told
+                 the same component
 Any warning or error that pvbatch prints fails the test, except one ParaView 5.11 prints itself
 when a plugin overrides a representation's subproxy (see KNOWN_PARAVIEW_WARNINGS).
 Exit status 125 (a ctest skip, with the reason) when the private root or the plugin is missing.
@@ -147,6 +149,12 @@ def compare(output, result, mesh_file):
     reference.SetInputData(reader.GetOutput())
     reference.SetScalarModeToUsePointFieldData()
     reference.SelectScalarArray(result["array"])
+    # A component or the magnitude, as ParaView's map says.
+    if result["vector_mode"] == "Component":
+        reference.SetVectorModeToComponent()
+    else:
+        reference.SetVectorModeToMagnitude()
+    reference.SetVectorComponent(result["vector_component"])
     reference.SetVolumeProperty(prop)
     reference.SetCamera(camera)
     reference.SetImageSize(result["size"], result["size"])
@@ -232,11 +240,15 @@ def main():
         output, result, warnings = run_pvbatch(
             options, name, ["--mesh", "mixed", "--size", str(options.size)])
         types = result["cell_types"]
-        print("mixed mesh: VTK cell types %s, colour map %s (discretize %d, %d steps)"
+        print("mixed mesh: VTK cell types %s, colour map %s (discretize %d, %d steps), "
+              "array %s, vector mode %s %d"
               % (types, result["colors"]["class"], result["colors"]["discretize"],
-                 result["colors"]["number_of_values"]))
-        if len(types) < 2 or not result["colors"]["discretize"]:
-            print("the mixed case is not a mixed mesh with a discretized map")
+                 result["colors"]["number_of_values"], result["array"], result["vector_mode"],
+                 result["vector_component"]))
+        if (len(types) < 2 or not result["colors"]["discretize"]
+                or result["vector_mode"] != "Component" or result["vector_component"] != 1):
+            print("the mixed case is not a mixed mesh, coloured by a vector component through "
+                  "a discretized map")
             ok = False
         if warnings:
             print("warnings:\n" + "\n".join(warnings))

@@ -5,7 +5,8 @@ Run by pvbatch (ParaView 5.11) from TestParaViewPlugin.py and from ParaView/benc
 Writes prefix.png (the view, exactly --size pixels) and prefix.json: camera, background, colour
 map and opacity function as ParaView set them up, the unit distance, frame times, the mapper's
 statistics. --mesh mixed builds a mixed-cell mesh instead (ParaView's Wavelet, clipped: hexahedra,
-wedges, pyramids, tetrahedra) and also writes prefix_tets.vtu, the same mesh split into tetrahedra
+wedges, pyramids, tetrahedra, with a vector array "vec" = (20 x, RTData, z) coloured by its Y
+component) and also writes prefix_tets.vtu, the same mesh split into tetrahedra
 as ParaView's representation splits it, for the reference.
 """
 import argparse
@@ -14,6 +15,7 @@ import sys
 import time
 
 from paraview.simple import (
+    Calculator,
     Clip,
     ColorBy,
     GetColorTransferFunction,
@@ -55,6 +57,10 @@ if args.mesh == "mixed":
     source.ClipType.Origin = [0.3, 0.2, 0.1]
     source.ClipType.Normal = [1.0, 0.7, 0.4]
     source.Crinkleclip = 0
+    # A vector array coloured by one component: what the representation forwards to the
+    # mapper as VectorMode/VectorComponent.
+    source = Calculator(Input=source, ResultArrayName="vec",
+                        Function="20*coordsX*iHat + RTData*jHat + coordsZ*kHat")
     source.UpdatePipeline()
     types = set()
     data = servermanager.Fetch(source)
@@ -68,8 +74,9 @@ else:
     types = None
 source.UpdatePipeline()
 info = source.GetDataInformation()
-array = args.array or source.PointData.keys()[0]
-lo, hi = source.PointData[array].GetRange()
+array = args.array or ("vec" if args.mesh == "mixed" else source.PointData.keys()[0])
+component = 1 if args.mesh == "mixed" else -1  # the Y component of "vec", or the magnitude
+lo, hi = source.PointData[array].GetRange(component)
 b = info.GetBounds()
 diagonal = ((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2) ** 0.5
 
@@ -81,7 +88,10 @@ if hasattr(view, "UseColorPaletteForBackground"):
 view.Background = [0.1, 0.1, 0.15]
 display = Show(source, view)
 display.SetRepresentationType("Volume")
-ColorBy(display, ("POINTS", array))
+if component >= 0:
+    ColorBy(display, ("POINTS", array, "XYZ"[component]))
+else:
+    ColorBy(display, ("POINTS", array))
 lut = GetColorTransferFunction(array)
 lut.RescaleTransferFunction(lo, hi)
 if args.smooth:
@@ -152,6 +162,8 @@ result = {
         "samples": samples,
         "class": ctf.GetClassName(),
     },
+    "vector_mode": lut.GetProperty("VectorMode").GetData(),
+    "vector_component": int(lut.VectorComponent),
     "opacity_points": list(opacity.Points),
     "first_frame_s": first,
     "frame_s": times,
