@@ -15,7 +15,6 @@
 #include "vtkPVLODVolume.h"
 #include "vtkScalarsToColors.h"
 #include "vtkTiledRayCastStatistics.h"
-#include "vtkTiledRayCastVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 
 vtkStandardNewMacro(vtkTiledRayCastVolumeRepresentation);
@@ -23,17 +22,13 @@ vtkStandardNewMacro(vtkTiledRayCastVolumeRepresentation);
 //------------------------------------------------------------------------------
 vtkTiledRayCastVolumeRepresentation::vtkTiledRayCastVolumeRepresentation()
 {
-  // The mapper is created here rather than as a mapper subproxy: the server-side proxy class
-  // of ParaView 5.11 registers its four mappers by name and knows of no fifth subproxy.
-  this->TiledRayCastMapper = vtkTiledRayCastVolumeMapper::New();
+  // The mapper is the representation's own rather than a mapper subproxy: the server-side
+  // proxy class of ParaView 5.11 registers its four mappers by name and knows of no fifth.
   this->AddVolumeMapper(GetTiledRayCastMapperName(), this->TiledRayCastMapper);
 }
 
 //------------------------------------------------------------------------------
-vtkTiledRayCastVolumeRepresentation::~vtkTiledRayCastVolumeRepresentation()
-{
-  this->TiledRayCastMapper->Delete();
-}
+vtkTiledRayCastVolumeRepresentation::~vtkTiledRayCastVolumeRepresentation() = default;
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastIntegrationMode(int mode)
@@ -113,5 +108,5 @@ void vtkTiledRayCastVolumeRepresentation::UpdateMapperParameters()
 void vtkTiledRayCastVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TiledRayCastMapper: " << this->TiledRayCastMapper << "\n";
+  os << indent << "TiledRayCastMapper: " << this->TiledRayCastMapper.GetPointer() << "\n";
 }

@@ -27,12 +27,12 @@
 #ifndef vtkTiledRayCastVolumeRepresentation_h
 #define vtkTiledRayCastVolumeRepresentation_h
 
+#include "vtkNew.h"                        // For vtkNew
 #include "vtkParaViewTiledRayCastModule.h" // For export macro
+#include "vtkTiledRayCastVolumeMapper.h"   // For vtkNew
 #include "vtkUnstructuredGridVolumeRepresentation.h"
 
 #include <string> // For std::string
-
-class vtkTiledRayCastVolumeMapper;
 
 class VTKPARAVIEWTILEDRAYCAST_EXPORT vtkTiledRayCastVolumeRepresentation
   : public vtkUnstructuredGridVolumeRepresentation
@@ -80,7 +80,7 @@ protected:
 
   void UpdateMapperParameters() override;
 
-  vtkTiledRayCastVolumeMapper* TiledRayCastMapper;
+  vtkNew<vtkTiledRayCastVolumeMapper> TiledRayCastMapper;
   std::string StatisticsSummary;
 
 private:
