@@ -1,11 +1,12 @@
 # The two commands of the README. Both install missing Debian packages, configure and build.
 #   make demo   render a tetrahedral mesh to a PNG and print what was done
 #   make test   run the whole test suite under ctest
+#   make paraview  fetch ParaView 5.11 privately, build the ParaView plugin, say how to load it
 # Developer targets:
 #   make build      configure and build ./build only
 #   make sanitize   build ./build-asan with ASan and UBSan and run the tests under them
 #   make install PREFIX=...
-.PHONY: demo test build sanitize install clean
+.PHONY: demo test build sanitize install clean paraview
 
 build:
 	Module/build.sh
@@ -15,6 +16,10 @@ demo:
 
 test:
 	Module/test.sh
+
+# Never installs ParaView (it would remove VTK's development package): docs/paraview.md.
+paraview:
+	ParaView/build-plugin.sh
 
 # make sanitize ARGS="-R Python" runs only some tests (ARGS go to ctest).
 sanitize:

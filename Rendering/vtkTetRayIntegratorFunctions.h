@@ -21,7 +21,8 @@
 #ifndef vtkTetRayIntegratorFunctions_h
 #define vtkTetRayIntegratorFunctions_h
 
-#include "vtkColorTransferFunction.h" // For vtkColorTransferFunction
+#include "vtkColorTransferFunction.h"              // For vtkColorTransferFunction
+#include "vtkDiscretizableColorTransferFunction.h" // For the discretization of a copy
 #include "vtkPiecewiseFunction.h"     // For vtkPiecewiseFunction
 #include "vtkSmartPointer.h"          // For vtkSmartPointer
 
@@ -79,6 +80,19 @@ public:
     copy->SetUseBelowRangeColor(f->GetUseBelowRangeColor());
     copy->SetAboveRangeColor(f->GetAboveRangeColor());
     copy->SetUseAboveRangeColor(f->GetUseAboveRangeColor());
+    // VTK 9.1's DeepCopy of a discretizable map leaves out its discretization (a copy of
+    // ParaView's default map would be smooth) and its lookup table is built on demand.
+    auto* discrete = vtkDiscretizableColorTransferFunction::SafeDownCast(f);
+    auto* discreteCopy = vtkDiscretizableColorTransferFunction::SafeDownCast(copy);
+    if (discrete && discreteCopy)
+    {
+      discreteCopy->SetDiscretize(discrete->GetDiscretize());
+      discreteCopy->SetNumberOfValues(discrete->GetNumberOfValues());
+      discreteCopy->SetIndexedLookup(discrete->GetIndexedLookup());
+      discreteCopy->SetUseLogScale(discrete->GetUseLogScale());
+      discrete->Build();
+      discreteCopy->Build();
+    }
     return copy;
   }
 

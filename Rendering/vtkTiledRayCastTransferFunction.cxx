@@ -13,6 +13,7 @@
 #include "vtkTetMesh.h"
 
 #include "vtkColorTransferFunction.h"
+#include "vtkDiscretizableColorTransferFunction.h"
 #include "vtkObjectFactory.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkVolumeProperty.h"
@@ -169,6 +170,92 @@ struct PropertyFunctions
   }
 };
 
+// A discretized colour map (vtkDiscretizableColorTransferFunction with Discretize on, the
+// default of ParaView's colour maps) is piecewise constant: NumberOfValues equal steps across
+// its node range, constant beyond. With an opacity function linear between its nodes, nodes at
+// every step and opacity node, each with its left and right values, represent both exactly;
+// linearising the steps instead would need thousands of nodes and still be approximate. Each
+// step's colour is VTK's own (GetColor inside the step), and the steps are checked to be
+// constant where they are assumed to be (a scale or lookup this does not model is left to the
+// general linearisation). Fills the node lists and returns true, or returns false and leaves
+// them empty.
+bool BuildDiscretizedNodes(const PropertyFunctions& functions, int maxNodes,
+  std::vector<double>& scalars, std::vector<double>& colors, std::vector<double>& attenuations)
+{
+  auto* map = vtkDiscretizableColorTransferFunction::SafeDownCast(functions.Color);
+  if (!map || !map->GetDiscretize() || map->GetIndexedLookup() ||
+    map->GetScale() != VTK_CTF_LINEAR || !PropertyFunctions::IsLinear(functions.Opacity) ||
+    map->GetSize() == 0)
+  {
+    return false;
+  }
+  map->Build(); // the lookup table GetColor reads, if the map changed since it was built
+  const int steps = map->GetNumberOfValues();
+  double range[2];
+  map->GetRange(range);
+  if (steps < 1 || !(range[1] > range[0]))
+  {
+    return false;
+  }
+  std::vector<double> breaks;
+  for (int k = 0; k <= steps; ++k)
+  {
+    breaks.push_back(range[0] + (range[1] - range[0]) * k / steps);
+  }
+  double node[4];
+  for (int i = 0; i < functions.Opacity->GetSize(); ++i)
+  {
+    functions.Opacity->GetNodeValue(i, node);
+    breaks.push_back(node[0]);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  if (2 * static_cast<int>(breaks.size()) > maxNodes)
+  {
+    return false;
+  }
+
+  // The colour of each interval between breaks (and beyond both ends), checked constant.
+  const size_t n = breaks.size();
+  const double margin = range[1] - range[0];
+  std::vector<double> interval(3 * (n + 1));
+  for (size_t i = 0; i <= n; ++i)
+  {
+    const double a = i == 0 ? breaks.front() - margin : breaks[i - 1];
+    const double b = i == n ? breaks.back() + margin : breaks[i];
+    map->GetColor(0.5 * (a + b), &interval[3 * i]);
+    for (double q : { 0.125, 0.875 })
+    {
+      double rgb[3];
+      map->GetColor(a + q * (b - a), rgb);
+      if (rgb[0] != interval[3 * i] || rgb[1] != interval[3 * i + 1] ||
+        rgb[2] != interval[3 * i + 2])
+      {
+        return false;
+      }
+    }
+  }
+
+  for (size_t i = 0; i < n; ++i)
+  {
+    double left[4], right[4];
+    functions.Evaluate(breaks[i], -1, left, left[3]);
+    functions.Evaluate(breaks[i], +1, right, right[3]);
+    const double* colorLeft = &interval[3 * i];
+    const double* colorRight = &interval[3 * (i + 1)];
+    scalars.push_back(breaks[i]);
+    colors.insert(colors.end(), colorLeft, colorLeft + 3);
+    attenuations.push_back(left[3]);
+    if (right[3] != left[3] || !std::equal(colorLeft, colorLeft + 3, colorRight))
+    {
+      scalars.push_back(breaks[i]);
+      colors.insert(colors.end(), colorRight, colorRight + 3);
+      attenuations.push_back(right[3]);
+    }
+  }
+  return true;
+}
+
 // Largest difference between two (colour, attenuation) values, attenuation relative to scale.
 double Difference(const double a[4], const double b[4], double attenuationScale)
 {
@@ -237,6 +324,14 @@ void vtkTiledRayCastTransferFunction::Build(
     functions.UnitDistance = 1.0;
   }
   this->Exact = functions.IsPiecewiseLinear();
+  if (!this->Exact &&
+    BuildDiscretizedNodes(
+      functions, this->MaximumNumberOfNodes, this->Scalars, this->Colors, this->Attenuations))
+  {
+    this->Exact = true;
+    this->FinishBuild(scalarRange);
+    return;
+  }
 
   std::vector<double> breaks;
   functions.CollectNodeScalars(breaks);
@@ -361,6 +456,12 @@ void vtkTiledRayCastTransferFunction::Build(
                                                                 "within the tolerance "
                                                              << tolerance << ".");
   }
+  this->FinishBuild(scalarRange);
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastTransferFunction::FinishBuild(const double scalarRange[2])
+{
 
   // Statistics and the shader's texels.
   this->MaximumAttenuation = 0.0;

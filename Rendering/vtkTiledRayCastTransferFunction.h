@@ -27,7 +27,10 @@
  * above/below-range colours) is evaluated through VTK's own GetValue()/GetColor() and
  * linearised adaptively until linear interpolation is within Tolerance of it everywhere
  * sampled (colour in [0,1] units; attenuation relative to its largest value), with at most
- * MaximumNumberOfNodes nodes; GetExact() then returns false.
+ * MaximumNumberOfNodes nodes; GetExact() then returns false. A discretized colour map
+ * (vtkDiscretizableColorTransferFunction with Discretize on, linear scale: ParaView's default)
+ * is piecewise constant and is exact too, with a node pair at each of its steps, whatever its
+ * colour space, as long as the opacity function is piecewise linear.
  *
  * Rebuilt by Update() only when the property, one of its functions, or the scalar range
  * changed.
@@ -118,6 +121,8 @@ protected:
 
   void Build(vtkVolumeProperty* property, const double scalarRange[2]);
   void AddNode(double s, const double rgb[3], double attenuation);
+  // Statistics of the node list and the shader's texels, once the nodes are in place.
+  void FinishBuild(const double scalarRange[2]);
 
   double Tolerance = 1e-3;
   int MaximumNumberOfNodes = 4096;

@@ -1,0 +1,91 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeRepresentation.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastVolumeRepresentation
+ * @brief   ParaView's Volume representation of unstructured grids, with "Tiled ray cast"
+ *
+ * ParaView 5.11 hard-codes the four volume mappers of its Volume representation of
+ * unstructured grids (vtkSIUnstructuredGridVolumeRepresentationProxy registers them by name),
+ * and its GUI and Python compare the representation's name "Volume" literally. So this
+ * representation does not add a representation type: the plugin's XML overrides the existing
+ * Volume representation with this subclass, which registers a vtkTiledRayCastVolumeMapper as a
+ * fifth mapper, "Tiled ray cast", and exposes its settings as properties.
+ *
+ * ParaView forwards the colour map's VectorMode and VectorComponent only to its smart mappers;
+ * this class forwards them to the tiled ray-cast mapper too, so that a vector array coloured by
+ * magnitude or by a component renders what the colour legend says.
+ */
+
+#ifndef vtkTiledRayCastVolumeRepresentation_h
+#define vtkTiledRayCastVolumeRepresentation_h
+
+#include "vtkNew.h"                        // For vtkNew
+#include "vtkParaViewTiledRayCastModule.h" // For export macro
+#include "vtkTiledRayCastVolumeMapper.h"   // For vtkNew
+#include "vtkUnstructuredGridVolumeRepresentation.h"
+
+#include <string> // For std::string
+
+class VTKPARAVIEWTILEDRAYCAST_EXPORT vtkTiledRayCastVolumeRepresentation
+  : public vtkUnstructuredGridVolumeRepresentation
+{
+public:
+  static vtkTiledRayCastVolumeRepresentation* New();
+  vtkTypeMacro(vtkTiledRayCastVolumeRepresentation, vtkUnstructuredGridVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The name under which the mapper is offered in SelectMapper.
+   */
+  static const char* GetTiledRayCastMapperName() { return "Tiled ray cast"; }
+
+  ///@{
+  /**
+   * Settings of the tiled ray-cast mapper (see vtkTiledRayCastVolumeMapper): integration mode,
+   * pipeline, tile size of the fragment pipeline, opacity at which rays stop.
+   */
+  void SetTiledRayCastIntegrationMode(int mode);
+  int GetTiledRayCastIntegrationMode();
+  void SetTiledRayCastPipeline(int pipeline);
+  int GetTiledRayCastPipeline();
+  void SetTiledRayCastTileSize(int size);
+  int GetTiledRayCastTileSize();
+  void SetTiledRayCastEarlyTerminationOpacity(double opacity);
+  double GetTiledRayCastEarlyTerminationOpacity();
+  ///@}
+
+  /**
+   * The mapper's statistics of its last frame (vtkTiledRayCastStatistics::GetSummary()), or an
+   * empty string before its first frame. Read from Python through the information property
+   * TiledRayCastStatistics.
+   */
+  const char* GetTiledRayCastStatistics();
+
+  /**
+   * The mapper itself.
+   */
+  vtkTiledRayCastVolumeMapper* GetTiledRayCastMapper() { return this->TiledRayCastMapper; }
+
+protected:
+  vtkTiledRayCastVolumeRepresentation();
+  ~vtkTiledRayCastVolumeRepresentation() override;
+
+  void UpdateMapperParameters() override;
+
+  vtkNew<vtkTiledRayCastVolumeMapper> TiledRayCastMapper;
+  std::string StatisticsSummary;
+
+private:
+  vtkTiledRayCastVolumeRepresentation(const vtkTiledRayCastVolumeRepresentation&) = delete;
+  void operator=(const vtkTiledRayCastVolumeRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# Fetches Debian 12's ParaView 5.11 (paraview, python3-paraview, paraview-dev) and unpacks it into
+# a private root, ${TRC_PARAVIEW_ROOT:-build/paraview/root}; the .deb files are kept in
+# build/paraview/debs and reused. It never installs ParaView: python3-paraview declares
+# Conflicts: python3-vtk9, so installing it would remove VTK's Python modules and libvtk9-dev,
+# which the VTK module is built against (docs/paraview.md). The shared libraries ParaView needs
+# and this system lacks (Debian packages that do not conflict with anything) are installed with
+# apt-get, as Module/install-deps.sh installs the module's own dependencies.
+#
+# Exit status: 0 when the root is ready (fetched now or reused), 125 when it cannot be fetched
+# here (no apt-get, no network, not root where something must be installed): the reason is
+# printed, and the ParaView tests report themselves skipped, never passed.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${TRC_BUILD_DIR:-$here/build}"
+root="${TRC_PARAVIEW_ROOT:-$build/paraview/root}"
+debs="$build/paraview/debs"
+packages=(paraview python3-paraview paraview-dev)
+version="5.11.0+dfsg-1+b1"
+
+skip() {
+  echo "TiledRayCast: cannot fetch ParaView here: $*" >&2
+  exit 125
+}
+
+if [ -f "$root/.complete" ]; then
+  echo "TiledRayCast: reusing the private ParaView root $root ($(cat "$root/.complete"))"
+  exit 0
+fi
+command -v apt-get >/dev/null 2>&1 || skip "no apt-get (a Debian 12 system is needed)"
+command -v dpkg >/dev/null 2>&1 || skip "no dpkg"
+
+sudo=""
+if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then
+  sudo="sudo"
+fi
+
+# The libraries that paraview and python3-paraview link, where missing: every "lib*" dependency
+# of theirs but alternatives (libqt5gui5 | libqt5gui5-gles: only the GUI needs either). The
+# Python and Qt tool dependencies are not needed by pvbatch, pvpython or the plugin's build.
+missing=()
+while read -r dep; do
+  if ! dpkg-query -W -f='${Status}' "$dep" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$dep")
+  fi
+done < <(apt-cache depends --no-recommends --no-suggests --no-conflicts --no-breaks \
+  --no-replaces --no-enhances "${packages[@]:0:2}" 2>/dev/null |
+  awk '$1 == "|Depends:" { alternative = 1; next }
+       $1 == "Depends:" && alternative { alternative = 0; next }  # a choice: leave it to the GUI
+       $1 == "Depends:" && $2 ~ /^lib/ && $2 !~ /-dev$/ { print $2 }' | sort -u)
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "TiledRayCast: installing libraries ParaView needs: ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ] && [ -z "$sudo" ]; then
+    skip "these libraries are missing and this is not root: ${missing[*]}"
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null ||
+    { $sudo apt-get update -q >/dev/null 2>&1 &&
+      $sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >/dev/null; } ||
+    skip "apt-get could not install ${missing[*]}"
+fi
+
+# The packages themselves, downloaded once into build/paraview/debs.
+mkdir -p "$debs"
+need=()
+for p in "${packages[@]}"; do
+  if ! ls "$debs/${p}_"*.deb >/dev/null 2>&1; then
+    need+=("$p")
+  fi
+done
+if [ ${#need[@]} -gt 0 ]; then
+  start=$(date +%s.%N)
+  # apt-get download runs as the invoking user; _apt cannot write to a root-owned build tree.
+  if ! (cd "$debs" && apt-get download -q -o APT::Sandbox::User=root "${need[@]}" 2>/dev/null); then
+    if [ "$(id -u)" -eq 0 ] || [ -n "$sudo" ]; then
+      $sudo apt-get update -q >/dev/null 2>&1 || true
+    fi
+    (cd "$debs" && apt-get download -q -o APT::Sandbox::User=root "${need[@]}") ||
+      skip "apt-get download ${need[*]} failed (no network or no Debian 12 package lists?)"
+  fi
+  end=$(date +%s.%N)
+  echo "TiledRayCast: downloaded ${need[*]}: $(du -cb "$debs"/*.deb | tail -1 | cut -f1) bytes" \
+    "in $(awk "BEGIN { printf \"%.1f\", $end - $start }") s"
+fi
+for p in "${packages[@]}"; do
+  v="$(dpkg-deb -f "$debs/${p}_"*.deb Version)"
+  if [ "$v" != "$version" ]; then
+    echo "TiledRayCast: note: $p is version $v, not $version, the version this was tested with"
+  fi
+done
+
+# Unpacked into a fresh directory, then moved into place: an interrupted run leaves no root
+# that looks complete.
+start=$(date +%s.%N)
+rm -rf "$root.partial"
+mkdir -p "$root.partial"
+for p in "${packages[@]}"; do
+  dpkg -x "$debs/${p}_"*.deb "$root.partial"
+done
+rm -rf "$root"
+mv "$root.partial" "$root"
+end=$(date +%s.%N)
+dpkg-deb -f "$debs/paraview_"*.deb Version > "$root/.complete"
+echo "TiledRayCast: unpacked ParaView $(cat "$root/.complete") into $root" \
+  "($(du -sh "$root" | cut -f1)) in $(awk "BEGIN { printf \"%.1f\", $end - $start }") s"
