@@ -6,7 +6,8 @@
 #   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
-# "pipelines" our two pipelines only, each at its default.
+# "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
+# moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame).
 # On the GPU, 20 views a turn (18 degrees apart): an interactive rotation. At 10 (36 degrees) every
 # frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
@@ -53,6 +54,16 @@ case "$kind" in
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
     "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 20 \
       --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  deforming)
+    # Every point moving every frame (BenchmarkDeformingMesh): rebuild, upload and render per
+    # frame, on the GPU meshes and torus_1m at 1024² (here on llvmpipe: TRC_DEFORMING_SIZE=512).
+    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    "$build/Benchmarks/BenchmarkDeformingMesh" --size "${TRC_DEFORMING_SIZE:-1024}" --frames 20 \
+      --csv "$out/deforming.csv" "$meshes/bluntfin_tets.vtu" \
+      "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;
