@@ -60,6 +60,7 @@
 #include "vtkUnstructuredGridPartialPreIntegration.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
+#include "vtkWeakPointer.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
@@ -402,6 +403,12 @@ public:
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
   bool WarnedClippingPlanes = false;
+  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
+  vtkWeakPointer<vtkRenderer> DeferredRenderer;
+  vtkWeakPointer<vtkVolume> DeferredVolume;
+  unsigned long DeferredObserver = 0;
+  bool DeferredPending = false;
+  bool DrawingDeferred = false;
   double OpacityUnitDistance = 1; // the property's, for the blend modes
   bool WarnedShading = false;
   bool WarnedGradientOpacity = false;
@@ -431,6 +438,10 @@ public:
       ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION
       : this->Self->GetIntegrationMode();
   }
+  // Draws the volume when `renderer` has finished its frame (EndEvent) instead of now.
+  void DeferToEndOfFrame(vtkRenderer* renderer, vtkVolume* volume);
+  static void DrawDeferred(vtkObject* renderer, unsigned long, void* mapper, void*);
+  void StopDeferring();
   // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
   // then marks the volume with itself as a render pass.
   static bool InsideVolumetricPeeling(vtkVolume* volume);
@@ -633,6 +644,52 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::str
     vtkErrorWithObjectMacro(self, << message);
     this->LastError = message;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DeferToEndOfFrame(
+  vtkRenderer* renderer, vtkVolume* volume)
+{
+  if (renderer != this->DeferredRenderer)
+  {
+    this->StopDeferring();
+    vtkNew<vtkCallbackCommand> callback;
+    callback->SetCallback(&vtkInternals::DrawDeferred);
+    callback->SetClientData(this->Self);
+    this->DeferredObserver = renderer->AddObserver(vtkCommand::EndEvent, callback);
+    this->DeferredRenderer = renderer;
+  }
+  this->DeferredVolume = volume;
+  this->DeferredPending = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawDeferred(
+  vtkObject* renderer, unsigned long, void* mapper, void*)
+{
+  auto* self = static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper);
+  vtkInternals* impl = self->Impl;
+  vtkVolume* volume = impl->DeferredVolume;
+  if (!impl->DeferredPending || !volume)
+  {
+    return;
+  }
+  impl->DeferredPending = false;
+  impl->DrawingDeferred = true;
+  self->Render(static_cast<vtkRenderer*>(renderer), volume);
+  impl->DrawingDeferred = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::StopDeferring()
+{
+  if (vtkRenderer* renderer = this->DeferredRenderer)
+  {
+    renderer->RemoveObserver(this->DeferredObserver);
+  }
+  this->DeferredRenderer = nullptr;
+  this->DeferredVolume = nullptr;
+  this->DeferredPending = false;
 }
 
 //------------------------------------------------------------------------------
@@ -2107,6 +2164,7 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkOpenGLTiledRayCastVolumeMapper()
 //------------------------------------------------------------------------------
 vtkOpenGLTiledRayCastVolumeMapper::~vtkOpenGLTiledRayCastVolumeMapper()
 {
+  this->Impl->StopDeferring();
   // Frees the GL objects in their own context, if the window still exists.
   this->ResourceCallback->Release();
   delete this->ResourceCallback;
@@ -2183,11 +2241,14 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  if (impl->InsideVolumetricPeeling(vol))
+  if (!impl->DrawingDeferred && impl->InsideVolumetricPeeling(vol))
   {
-    impl->ReportError("Depth peeling for volumes (vtkRenderer::UseDepthPeelingForVolumes) is not "
-                      "supported by this mapper yet: it draws nothing inside VTK's volumetric "
-                      "peels. Turn it off (the volume is then drawn after translucent geometry).");
+    // VTK's dual depth peeling hands volumes depth ranges through shader replacements written
+    // for its image ray caster, which this mapper cannot take part in yet: it draws nothing in
+    // the peels and draws the volume once the renderer has finished, over the composited scene,
+    // as it does without depth peeling for volumes (the translucent-geometry warning below says
+    // so, once).
+    impl->DeferToEndOfFrame(ren, vol);
     return;
   }
 
@@ -2210,7 +2271,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
                     "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
-                    "mapper). Make that geometry opaque, or render it in another renderer.");
+                    "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
+                    "render it in another renderer.");
     impl->WarnedTranslucentGeometry = true;
   }
   if (this->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||

@@ -226,8 +226,9 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   }
 
   // Depth peeling for volumes: VTK's dual depth peeling hands volumes depth ranges through
-  // shader replacements written for its image ray caster. Not supported yet: one error, nothing
-  // of the volume drawn in its peels, the translucent sphere drawn as without the volume.
+  // shader replacements written for its image ray caster, which this mapper cannot take part in
+  // yet (it drew tile-patterned garbage). It draws the volume after the renderer has finished,
+  // as without the switch: the same image as with peeling for volumes off, and one warning.
   {
     trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
     vtkNew<MessageCounter> errors;
@@ -244,35 +245,34 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     translucent->GetProperty()->SetOpacity(0.4);
     scene.Renderer->AddActor(translucent);
     scene.Renderer->SetUseDepthPeeling(1);
-    scene.Renderer->SetUseDepthPeelingForVolumes(1);
-    scene.Volume->VisibilityOff();
-    scene.Window->Render();
+    auto pixels = [&](vtkUnsignedCharArray* out)
+    {
+      scene.Window->Render();
+      scene.Window->Render();
+      scene.Window->GetPixelData(0, 0, 63, 63, 0, out, 0);
+    };
     vtkNew<vtkUnsignedCharArray> without;
-    scene.Window->GetPixelData(0, 0, 63, 63, 0, without, 0);
-    scene.Volume->VisibilityOn();
-    scene.Window->Render();
-    scene.Window->Render();
+    pixels(without);
+    scene.Renderer->SetUseDepthPeelingForVolumes(1);
     vtkNew<vtkUnsignedCharArray> with;
-    scene.Window->GetPixelData(0, 0, 63, 63, 0, with, 0);
+    pixels(with);
     int differing = 0;
     for (vtkIdType i = 0; i < with->GetNumberOfValues(); ++i)
     {
-      differing += with->GetValue(i) != without->GetValue(i) ? 1 : 0;
+      differing += std::abs(with->GetValue(i) - without->GetValue(i)) > 1 ? 1 : 0;
     }
-    ok = Expect(errors->Count == 1 &&
-             errors->Text.find("UseDepthPeelingForVolumes") != std::string::npos &&
-             scene.Warnings->Count == 0,
-           "volumetric peeling: one error, no warning (got: " + errors->Text +
+    ok = Expect(errors->Count == 0 && scene.Warnings->Count == 1,
+           "volumetric peeling: no error, one warning (got: " + errors->Text +
              scene.Warnings->Text + ")") &&
       ok;
     ok = Expect(differing == 0,
-           "volumetric peeling: nothing of the volume drawn (" + std::to_string(differing) +
-             " values differ)") &&
+           "volumetric peeling: the image of peeling for volumes off (" +
+             std::to_string(differing) + " values differ)") &&
       ok;
-    // Without peeling for volumes the volume is drawn again.
-    scene.Renderer->SetUseDepthPeelingForVolumes(0);
-    scene.Window->Render();
-    ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "peeling for volumes off: drawn") && ok;
+    ok = Expect(scene.Mapper->GetStatistics()->GetRendered() &&
+             scene.Mapper->GetStatistics()->GetNumberOfRays() > 100,
+           "volumetric peeling: the volume drawn") &&
+      ok;
   }
 
   // No input after a good frame: VTK's pipeline reports the missing input (on the mapper's
