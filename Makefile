@@ -21,7 +21,8 @@ test:
 paraview:
 	ParaView/build-plugin.sh
 
-# make sanitize ARGS="-R Python" runs only some tests (ARGS go to ctest).
+# make sanitize ARGS="-R Python" runs only some tests (ARGS go to ctest, through the shell: quote a
+# pattern with | in it, ARGS="-R 'BadInput|Scenes'").
 sanitize:
 	Module/sanitize.sh $(ARGS)
 
