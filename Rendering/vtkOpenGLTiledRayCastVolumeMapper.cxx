@@ -409,7 +409,6 @@ public:
   unsigned long DeferredObserver = 0;
   bool DeferredPending = false;
   bool DrawingDeferred = false;
-  double OpacityUnitDistance = 1; // the property's, for the blend modes
   bool WarnedShading = false;
   bool WarnedGradientOpacity = false;
   bool WarnedStoppedRays = false;
@@ -1032,7 +1031,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->TransferFunction->Update(property, this->ScalarRange);
-  this->OpacityUnitDistance = property->GetScalarOpacityUnitDistance(0);
 
   vtkIdType uploaded = 0;
   const int mode = this->IntegrationMode();
@@ -1649,7 +1647,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
   p->SetUniformi("in_blendMode", this->Self->GetBlendMode());
   p->SetUniform2f("in_blendScalarRange", range);
   p->SetUniform2f("in_averageRange", averageRange);
-  p->SetUniformf("in_opacityUnitDistance", static_cast<float>(this->OpacityUnitDistance));
+  // The unit distance the node list's attenuations were divided by: opacity = tau * distance.
+  p->SetUniformf(
+    "in_opacityUnitDistance", static_cast<float>(this->TransferFunction->GetUnitDistance()));
 }
 
 //------------------------------------------------------------------------------
@@ -2324,8 +2324,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return;
   }
-  if (!impl->Geometry.ComputeClippingPlanes(
-        this->ClippingPlanes, vol, impl->Shift, impl->MeshBounds) &&
+  if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
     !impl->WarnedClippingPlanes)
   {
     vtkErrorMacro(<< this->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "

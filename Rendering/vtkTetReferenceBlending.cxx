@@ -20,12 +20,17 @@
 
 namespace
 {
+// s normalised to the data's scalar range (0 where the range is a single value).
+double Normalised(const double range[2], double s)
+{
+  const double width = range[1] - range[0];
+  return width > 0 ? (s - range[0]) / width : 0.0;
+}
+
 // The integral over scalars [lo, hi] of opacity(s) times s normalised to the data's range.
 double WeightedIntegral(
   vtkPiecewiseFunction* opacity, const double range[2], double lo, double hi)
 {
-  const double width = range[1] - range[0];
-  auto normalised = [&](double s) { return width > 0 ? (s - range[0]) / width : 0.0; };
   std::vector<double> cuts = { lo };
   for (int i = 0; i < opacity->GetSize(); ++i)
   {
@@ -51,7 +56,7 @@ double WeightedIntegral(
       for (int q = 0; q < 3; ++q)
       {
         const double s = mid + 0.5 * step * x[q];
-        sum += 0.5 * step * w[q] * opacity->GetValue(s) * normalised(s);
+        sum += 0.5 * step * w[q] * opacity->GetValue(s) * Normalised(range, s);
       }
     }
   }
@@ -71,7 +76,6 @@ void vtkTetReferenceBlending::BlendRay(const std::vector<vtkTetReferenceRayCaste
   const bool extreme = mode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ||
     mode == vtkVolumeMapper::MINIMUM_INTENSITY_BLEND;
   bool seen = false;
-  bool first = true;
   double best = 0.0;
   double integral = 0.0;
   double length = 0.0;
@@ -84,16 +88,16 @@ void vtkTetReferenceBlending::BlendRay(const std::vector<vtkTetReferenceRayCaste
     }
     const double lo = std::min(hit.S0, hit.S1);
     const double hi = std::max(hit.S0, hit.S1);
-    seen = true;
     if (extreme)
     {
       const double value = mode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ? hi : lo;
       const bool better =
         mode == vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND ? value > best : value < best;
-      best = first || better ? value : best;
-      first = false;
+      best = !seen || better ? value : best;
+      seen = true;
       continue;
     }
+    seen = true;
     double from = lo, to = hi, part = d;
     if (mode == vtkVolumeMapper::AVERAGE_INTENSITY_BLEND)
     {
@@ -105,11 +109,9 @@ void vtkTetReferenceBlending::BlendRay(const std::vector<vtkTetReferenceRayCaste
       }
       part = hi > lo ? d * (to - from) / (hi - lo) : d;
     }
-    const double width = settings.ScalarRange[1] - settings.ScalarRange[0];
     integral += to > from
       ? WeightedIntegral(opacity, settings.ScalarRange, from, to) * part / (to - from)
-      : opacity->GetValue(from) * (width > 0 ? (from - settings.ScalarRange[0]) / width : 0.0) *
-        part;
+      : opacity->GetValue(from) * Normalised(settings.ScalarRange, from) * part;
     length += part;
   }
   if (!seen)

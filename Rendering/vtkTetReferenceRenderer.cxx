@@ -484,12 +484,15 @@ int vtkTetReferenceRenderer::Render()
   blending.AverageRange[1] = this->AverageIPScalarRange[1];
   blending.ScalarRange[0] = VTK_DOUBLE_MAX;
   blending.ScalarRange[1] = VTK_DOUBLE_MIN;
-  for (double v : in.Mesh.Scalars)
+  if (blending.Mode != 0) // compositing needs no range: no pass over the scalars per image
   {
-    if (std::isfinite(v))
+    for (double v : in.Mesh.Scalars)
     {
-      blending.ScalarRange[0] = std::min(blending.ScalarRange[0], v);
-      blending.ScalarRange[1] = std::max(blending.ScalarRange[1], v);
+      if (std::isfinite(v))
+      {
+        blending.ScalarRange[0] = std::min(blending.ScalarRange[0], v);
+        blending.ScalarRange[1] = std::max(blending.ScalarRange[1], v);
+      }
     }
   }
   in.CastRays(rays, this->Integrator, blending,

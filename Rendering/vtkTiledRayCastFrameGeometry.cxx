@@ -35,6 +35,20 @@ void ToColumnMajor(const double m[16], float out[16])
     }
   }
 }
+
+// The smallest and largest value of dot(plane.xyz, x) + plane.w over the corners of a box.
+void PlaneRangeOverBox(const double plane[4], const double bounds[6], double& lo, double& hi)
+{
+  lo = VTK_DOUBLE_MAX;
+  hi = VTK_DOUBLE_MIN;
+  for (int c = 0; c < 8; ++c)
+  {
+    const double p[3] = { bounds[c & 1], bounds[2 + ((c >> 1) & 1)], bounds[4 + ((c >> 2) & 1)] };
+    const double d = plane[0] * p[0] + plane[1] * p[1] + plane[2] * p[2] + plane[3];
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -54,6 +68,7 @@ bool vtkTiledRayCastFrameGeometry::Compute(
   }
   vtkNew<vtkMatrix4x4> objectToWorld;
   vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), shift, objectToWorld);
+  std::copy(objectToWorld->GetData(), objectToWorld->GetData() + 16, this->ShiftedObjectToWorld);
   vtkNew<vtkMatrix4x4> objectToClip;
   vtkMatrix4x4::Multiply4x4(worldToClip, objectToWorld, objectToClip);
   vtkNew<vtkMatrix4x4> clipToObject;
@@ -149,16 +164,10 @@ bool vtkTiledRayCastFrameGeometry::Compute(
   }
   this->NearPlane[3] = static_cast<float>(offset);
   // Only when the near plane cuts the mesh's bounds can a ray start inside the mesh.
-  bool below = false, above = false;
-  for (int c = 0; c < 8; ++c)
-  {
-    const double p[3] = { meshBounds[c & 1], meshBounds[2 + ((c >> 1) & 1)],
-      meshBounds[4 + ((c >> 2) & 1)] };
-    const double d = vtkMath::Dot(normal, p) + offset;
-    below = below || d < 0;
-    above = above || d > 0;
-  }
-  this->NearPlaneCutsMesh = below && above;
+  const double nearPlane[4] = { normal[0], normal[1], normal[2], offset };
+  double lo, hi;
+  PlaneRangeOverBox(nearPlane, meshBounds, lo, hi);
+  this->NearPlaneCutsMesh = lo < 0 && hi > 0;
   this->BoundsCoverage = this->ComputeBoundsCoverage(meshBounds);
   this->Valid = std::isfinite(this->RayDir[0][0]) && std::isfinite(this->RayOrigin[0][0]);
   return this->Valid;
@@ -198,27 +207,16 @@ double vtkTiledRayCastFrameGeometry::ComputeBoundsCoverage(const double meshBoun
 }
 
 //------------------------------------------------------------------------------
-bool vtkTiledRayCastFrameGeometry::ComputeClippingPlanes(vtkPlaneCollection* planes,
-  vtkVolume* vol, const double shiftBy[3], const double meshBounds[6])
+bool vtkTiledRayCastFrameGeometry::ComputeClippingPlanes(
+  vtkPlaneCollection* planes, const double meshBounds[6])
 {
   this->NumberOfClippingPlanes = 0;
   this->ClippedAway = false;
   const int given = planes ? planes->GetNumberOfItems() : 0;
-  if (given == 0)
-  {
-    return true;
-  }
-  // A plane (n, -n.o) as a row vector times the shifted-object-to-world matrix: the same
-  // function of the point, so the kept side stays the kept side under any matrix (mirrors too).
-  vtkNew<vtkMatrix4x4> shift;
-  for (int i = 0; i < 3; ++i)
-  {
-    shift->SetElement(i, 3, shiftBy[i]);
-  }
-  vtkNew<vtkMatrix4x4> objectToWorld;
-  vtkMatrix4x4::Multiply4x4(vol->GetMatrix(), shift, objectToWorld);
   for (int k = 0; k < std::min(given, MaximumClippingPlanes); ++k)
   {
+    // A plane (n, -n.o) as a row vector times the shifted-object-to-world matrix: the same
+    // function of the point, so the kept side stays the kept side under any matrix (mirrors too).
     vtkPlane* plane = planes->GetItem(k);
     double normal[3], origin[3];
     plane->GetNormal(normal);
@@ -230,7 +228,7 @@ bool vtkTiledRayCastFrameGeometry::ComputeClippingPlanes(vtkPlaneCollection* pla
       object[c] = 0;
       for (int r = 0; r < 4; ++r)
       {
-        object[c] += world[r] * objectToWorld->GetElement(r, c);
+        object[c] += world[r] * this->ShiftedObjectToWorld[4 * r + c];
       }
     }
     const double length = std::sqrt(vtkMath::Dot(object, object));
@@ -238,14 +236,9 @@ bool vtkTiledRayCastFrameGeometry::ComputeClippingPlanes(vtkPlaneCollection* pla
     {
       continue; // a plane without a normal clips nothing
     }
-    bool kept = false;
-    for (int c = 0; c < 8; ++c)
-    {
-      const double p[3] = { meshBounds[c & 1], meshBounds[2 + ((c >> 1) & 1)],
-        meshBounds[4 + ((c >> 2) & 1)] };
-      kept = kept || vtkMath::Dot(object, p) + object[3] >= 0;
-    }
-    this->ClippedAway = this->ClippedAway || !kept;
+    double lo, hi;
+    PlaneRangeOverBox(object, meshBounds, lo, hi);
+    this->ClippedAway = this->ClippedAway || hi < 0;
     float* out = this->ClippingPlanes[this->NumberOfClippingPlanes++];
     for (int c = 0; c < 4; ++c)
     {

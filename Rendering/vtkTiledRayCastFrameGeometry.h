@@ -45,13 +45,12 @@ public:
 
   /**
    * The mapper's clipping planes (world coordinates, VTK's: the side a plane's normal points to
-   * is kept) in shifted object coordinates, normalised, for this volume's matrix: at most
-   * MaximumClippingPlanes. Call after Compute(). Returns false when there are more planes (the
-   * first MaximumClippingPlanes are kept). ClippedAway: the mesh's bounds lie wholly on the
-   * removed side of a plane, so nothing is left to draw.
+   * is kept) in shifted object coordinates, normalised, for the volume's matrix of the last
+   * Compute(): at most MaximumClippingPlanes. Call after Compute(). Returns false when there are
+   * more planes (the first MaximumClippingPlanes are kept). ClippedAway: the mesh's bounds lie
+   * wholly on the removed side of a plane, so nothing is left to draw.
    */
-  bool ComputeClippingPlanes(vtkPlaneCollection* planes, vtkVolume* volume,
-    const double shift[3], const double meshBounds[6]);
+  bool ComputeClippingPlanes(vtkPlaneCollection* planes, const double meshBounds[6]);
   static constexpr int MaximumClippingPlanes = 6;
   int NumberOfClippingPlanes = 0;
   float ClippingPlanes[MaximumClippingPlanes][4] = {}; // n.x + d >= 0 is kept
@@ -65,6 +64,7 @@ public:
   float ObjectToWorld[9] = {};    // column-major linear part of the volume's matrix
   double ObjectToWorldNorm = 1;   // its Frobenius norm: bounds how much it stretches lengths
   float ObjectToClip[16] = {};    // column-major, shifted object coordinates to clip
+  double ShiftedObjectToWorld[16] = {}; // row-major, the volume's matrix after the shift
   float NearPlane[4] = {};        // n.x + d, positive beyond the near plane
   bool NearPlaneCutsMesh = false; // the camera may be inside the mesh
   // The fraction of the viewport that the mesh's bounds cover on screen (1 when they reach

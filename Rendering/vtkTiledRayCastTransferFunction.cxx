@@ -323,6 +323,7 @@ void vtkTiledRayCastTransferFunction::Build(
       "Scalar opacity unit distance " << functions.UnitDistance << " is not positive: using 1.");
     functions.UnitDistance = 1.0;
   }
+  this->UnitDistance = functions.UnitDistance;
   this->Exact = functions.IsPiecewiseLinear();
   if (!this->Exact &&
     BuildDiscretizedNodes(
@@ -555,5 +556,6 @@ void vtkTiledRayCastTransferFunction::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Exact: " << this->Exact << "\n";
   os << indent << "NumberOfNodes: " << this->GetNumberOfNodes() << "\n";
   os << indent << "MaximumAttenuation: " << this->MaximumAttenuation << "\n";
+  os << indent << "UnitDistance: " << this->UnitDistance << "\n";
   os << indent << "NarrowestFeature: " << this->NarrowestFeature << "\n";
 }

@@ -98,6 +98,12 @@ public:
   vtkGetMacro(MaximumAttenuation, double);
 
   /**
+   * The scalar opacity unit distance the attenuations were divided by (the property's, or 1 where
+   * that is not positive): opacity = attenuation * UnitDistance.
+   */
+  vtkGetMacro(UnitDistance, double);
+
+  /**
    * The narrowest feature: the smallest positive distance between two consecutive node scalars
    * that lie within the data's scalar range (the range width if there is none). Tables indexed
    * by scalar must be finer than this.
@@ -128,6 +134,7 @@ protected:
   int MaximumNumberOfNodes = 4096;
   bool Exact = true;
   double MaximumAttenuation = 0;
+  double UnitDistance = 1;
   double NarrowestFeature = 0;
   std::vector<double> Scalars;
   std::vector<double> Colors;
