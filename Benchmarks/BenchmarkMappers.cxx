@@ -28,6 +28,10 @@
 //     --order O         input (default), morton, morton-cells, morton-points or shuffled: the
 //                       memory order of cells and points (BenchmarkMeshOrder.h); the scene is
 //                       named mesh+O unless input
+//     --tf T            ramp (default: the scenes' ramp), band (opacity only in a band 2 % of
+//                       the scalar range wide, at its middle) or spike (0.4 % wide): the scene
+//                       is named mesh+T unless ramp, and ours is also timed without empty-space
+//                       skipping ("compute no-skipping")
 //
 // Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own;
 // then, after half a second of warm-up frames, F frames, each Render() followed by glFinish
@@ -96,6 +100,7 @@ struct Options
   std::vector<int> Resample = { 64, 128, 256 };
   bool Reference = true;
   std::string Order = "input";
+  std::string TransferFunction = "ramp";
   std::vector<std::string> Meshes;
 };
 
@@ -159,10 +164,18 @@ double Median(std::vector<double> v)
 }
 
 // The transfer function of every benchmark: the ramp of the tests' scenes over the scalar range,
-// unit distance 1/20 of the bounding-box diagonal (TiledRayCastSharedScenes.h).
-vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkDataSet* grid)
+// or a band or spike of it (--tf), unit distance 1/20 of the bounding-box diagonal
+// (TiledRayCastSharedScenes.h).
+vtkSmartPointer<vtkVolumeProperty> MakeProperty(vtkDataSet* grid, const std::string& tf)
 {
-  return trcscene::MakePropertyFor(grid, 0.05);
+  if (tf == "ramp")
+  {
+    return trcscene::MakePropertyFor(grid, 0.05);
+  }
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  const double width = tf == "band" ? 0.02 : 0.004;
+  return trcscene::MakeBandProperty(range, 0.5 - 0.5 * width, width, 0.05 * grid->GetLength());
 }
 
 // View i of the camera path: VTK's ResetCamera, then an elevation of 20 degrees and a turn.
@@ -231,7 +244,7 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   std::vector<Setting> settings;
   using M = vtkTiledRayCastVolumeMapper;
   auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
-                int queryInterval = 4)
+                int queryInterval = 4, bool skipping = true)
   {
     // "compute ..." settings run the compute pipeline, the others the fragment pipeline.
     const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
@@ -246,6 +259,7 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
         m->SetTetsPerPass(n);
         m->SetTileSize(tile);
         m->SetOcclusionQueryInterval(queryInterval);
+        m->SetEmptySpaceSkipping(skipping);
         if (table > 0)
         {
           m->SetPreIntegrationTableScalarSize(table);
@@ -274,6 +288,10 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   }
   const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
   ours("compute default", partial, compact, 0, 256, 0);
+  if (o.TransferFunction != "ramp")
+  {
+    ours("compute no-skipping", partial, compact, 0, 256, 0, 4, false);
+  }
   if (o.OursOnly)
   {
     return settings;
@@ -434,6 +452,16 @@ int main(int argc, char* argv[])
         return EXIT_FAILURE;
       }
     }
+    else if (a == "--tf")
+    {
+      o.TransferFunction = next();
+      if (o.TransferFunction != "ramp" && o.TransferFunction != "band" &&
+        o.TransferFunction != "spike")
+      {
+        std::cerr << "--tf takes ramp, band or spike\n";
+        return EXIT_FAILURE;
+      }
+    }
     else if (!a.empty() && a[0] == '-')
     {
       std::cerr << "unknown option " << a << "\n";
@@ -482,9 +510,10 @@ int main(int argc, char* argv[])
       continue;
     }
     std::string mesh = path.substr(path.find_last_of('/') + 1);
-    const std::string scene =
-      mesh.substr(0, mesh.find('.')) + (o.Order == "input" ? "" : "+" + o.Order);
-    vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(grid);
+    const std::string scene = mesh.substr(0, mesh.find('.')) +
+      (o.Order == "input" ? "" : "+" + o.Order) +
+      (o.TransferFunction == "ramp" ? "" : "+" + o.TransferFunction);
+    vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(grid, o.TransferFunction);
 
     for (int size : o.Sizes)
     {

@@ -7,12 +7,13 @@
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
 # "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
-# moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame).
+# moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame); "empty"
+# band and spike transfer functions with and without empty-space skipping.
 # On the GPU, 20 views a turn (18 degrees apart): an interactive rotation. At 10 (36 degrees) every
 # frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu, pipelines, defaults or ladder}"
+kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming or empty}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -64,6 +65,29 @@ case "$kind" in
     "$build/Benchmarks/BenchmarkDeformingMesh" --size "${TRC_DEFORMING_SIZE:-1024}" --frames 20 \
       --csv "$out/deforming.csv" "$meshes/bluntfin_tets.vtu" \
       "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  empty)
+    # Empty-space skipping: a band 2 % of the scalar range wide and a spike 0.4 % wide, ours
+    # with and without skipping, on the GPU meshes and torus_1m (and wavelet_30m on the GPU,
+    # without the reference: its exact image takes too long), at TRC_EMPTY_SIZE (1024; 512 here).
+    size="${TRC_EMPTY_SIZE:-1024}"
+    rungs="torus_1m ${TRC_EMPTY_LARGE:-wavelet_30m}"
+    "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' $rungs) \
+      --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    for tf in band spike; do
+      "$bench" --ours-only --no-others --tf $tf --size "$size" --frames "${TRC_EMPTY_FRAMES:-20}" \
+        --csv "$out/empty.csv" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
+        "$out/ladder/torus_1m.vtu"
+      for f in "$out"/ladder/*.vtu; do
+        case "$(basename "$f")" in
+          torus_1m.vtu) ;;
+          *) "$bench" --ours-only --no-others --no-reference --tf $tf --size "$size" --frames \
+               "${TRC_EMPTY_FRAMES:-20}" --csv "$out/empty.csv" "$f" ;;
+        esac
+      done
+    done
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;

@@ -55,6 +55,7 @@
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
+#include "vtkTiledRayCastVisibleMesh.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkUnstructuredGridPartialPreIntegration.h"
@@ -334,9 +335,9 @@ public:
   vtkMTimeType MeshTime = 0;
   vtkMTimeType ReportedTime = 0;
   std::vector<MeshTexture*> MeshTextures;
-  vtkNew<vtkOpenGLBufferObject> FaceBuffer;
-  vtkNew<vtkTextureObject> FaceTexture;
-  vtkIdType NumberOfFaces = 0;
+  // The faces rays enter by, and which tets they may cross (empty-space skipping).
+  vtkTiledRayCastVisibleMesh VisibleMesh;
+  vtkIdType TextureBufferLimit = 0;
   vtkIdType NumberOfTets = 0;
   vtkMTimeType UploadedLayoutTime = 0;
   vtkIdType MeshBytes = 0;
@@ -450,6 +451,7 @@ public:
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
+  bool UpdateVisibleMesh(vtkOpenGLRenderWindow* window);
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
   bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
@@ -576,7 +578,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.Window = window;
   frame.Width = this->ImageSize[0];
   frame.Height = this->ImageSize[1];
-  frame.NumberOfBoundaryFaces = this->NumberOfFaces;
+  frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
   frame.NumberOfTetrahedra = this->NumberOfTets;
   frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
   frame.Mirrored = this->Geometry.Mirrored;
@@ -853,13 +855,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkTetMeshLayout* layout = this->Layout;
   layout->SetMaximumTextureSize(textureLimit);
   layout->SetMaximumTextureBufferSize(bufferLimit);
-  if (mesh->GetNumberOfBoundaryFaces() > bufferLimit)
-  {
-    this->ReportError("The mesh has more boundary faces (" +
-      std::to_string(mesh->GetNumberOfBoundaryFaces()) + ") than the texture buffer limit (" +
-      std::to_string(bufferLimit) + "). Nothing is drawn.");
-    return false;
-  }
+  this->TextureBufferLimit = bufferLimit;
   if (!layout->Update(mesh))
   {
     this->ReportError(std::string("Cannot pack the mesh for this GPU: ") +
@@ -877,7 +873,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   {
     this->MeshTime = mesh->GetMTime();
     this->NumberOfTets = mesh->GetNumberOfTetrahedra();
-    this->NumberOfFaces = mesh->GetNumberOfBoundaryFaces();
     this->HasCellScalars = mesh->GetHasCellScalars();
     mesh->GetShift(this->Shift);
     double bounds[6];
@@ -991,19 +986,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
     uploaded += bytes;
   }
 
-  // Boundary faces, (tet << 2) | face, drawn without a vertex buffer.
   vtkTetMesh* mesh = this->Builder->GetMesh();
-  if (!sameArrays || mesh->GetTopologyTime() > this->UploadedLayoutTime)
-  {
-    this->FaceBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-    this->FaceBuffer->Upload(mesh->GetBoundaryFaces(), static_cast<size_t>(this->NumberOfFaces),
-      vtkOpenGLBufferObject::TextureBuffer);
-    this->FaceTexture->SetContext(window);
-    this->FaceTexture->SetInternalFormat(GL_R32UI);
-    this->FaceTexture->CreateTextureBuffer(
-      static_cast<unsigned int>(this->NumberOfFaces), 1, VTK_UNSIGNED_INT, this->FaceBuffer);
-    uploaded += this->NumberOfFaces * 4;
-  }
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
     this->ReportError("The GPU ran out of memory while uploading the mesh. Nothing is drawn.");
@@ -1011,7 +994,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
     return false;
   }
 
-  this->MeshBytes = this->NumberOfFaces * 4;
+  this->MeshBytes = 0;
   for (MeshTexture* t : this->MeshTextures)
   {
     this->MeshBytes += t->Bytes;
@@ -1139,6 +1122,33 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
 }
 
 //------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
+  vtkOpenGLRenderWindow* window)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  // Zero opacity draws nothing only under composite blending: the other blend modes see the
+  // scalars of every tet.
+  const bool skip =
+    self->GetEmptySpaceSkipping() && self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND;
+  vtkIdType uploaded = 0;
+  std::string error;
+  if (!this->VisibleMesh.Update(window, this->Builder->GetMesh(),
+        skip ? this->TransferFunction.GetPointer() : nullptr, this->TextureBufferLimit, uploaded,
+        error))
+  {
+    this->ReportError(error + ". Nothing is drawn.");
+    return false;
+  }
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
+  stats->SetTransferFunctionBuildTime(
+    stats->GetTransferFunctionBuildTime() + this->VisibleMesh.GetBuildTime());
+  stats->SetNumberOfVisibleTetrahedra(this->VisibleMesh.GetNumberOfVisibleTetrahedra());
+  stats->SetNumberOfEntryFaces(this->VisibleMesh.GetNumberOfFaces());
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
@@ -1170,7 +1180,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
     integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
   }
   std::vector<std::pair<std::string, std::string>> common = {
-    { "//TRC::Common::Dec", vtkTiledRayCastCommonFS },
+    { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
     { "//TRC::Layout::Dec", layoutCode },
     { "//TRC::Integration::Dec", integrationCode },
   };
@@ -1540,7 +1550,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   {
     textures.push_back(t->Texture);
   }
-  textures.push_back(this->FaceTexture);
   textures.push_back(this->OpaqueDepth);
   if (this->UseCompute)
   {
@@ -1576,6 +1585,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
       t->Deactivate();
     }
   }
+  this->VisibleMesh.ActivateTextures(activate);
 }
 
 //------------------------------------------------------------------------------
@@ -1627,7 +1637,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderP
   {
     p->SetUniformi(t->Uniform.c_str(), t->Texture->GetTextureUnit());
   }
-  p->SetUniformi("in_boundaryFaces", this->FaceTexture->GetTextureUnit());
+  this->VisibleMesh.SetUniforms(p);
   if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Layout))
   {
     p->SetUniformi("in_paperWidth", paper->GetTextureWidth());
@@ -1780,7 +1790,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
   this->FirstHitProgram.VAO->Bind();
   // Faces are not clipped at the near plane: their fragment shader decides there.
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   vtkInternalsCheckErrorMacro("failed after the first-hit pass");
   return true;
@@ -1815,7 +1825,7 @@ unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRend
   this->PeelProgram.VAO->Bind();
   const unsigned int query = this->Queries.Begin();
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->NumberOfFaces));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
   this->Queries.End();
   // Whether another layer exists decides what to draw next: this read waits for the GPU, once
@@ -2098,8 +2108,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
 {
   this->Compute.ReleaseGraphicsResources(window);
   this->ClearMeshTextures();
-  this->FaceTexture->ReleaseGraphicsResources(window);
-  this->FaceBuffer->ReleaseGraphicsResources();
+  this->VisibleMesh.ReleaseGraphicsResources(window);
   this->NodeTexture->ReleaseGraphicsResources(window);
   this->NodeBuffer->ReleaseGraphicsResources();
   this->PsiTexture->ReleaseGraphicsResources(window);
@@ -2337,7 +2346,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return; // the clipping planes leave nothing of the mesh: nothing is visible
   }
   if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
-    !impl->UpdatePrograms(window) || !impl->UpdateTargets(window, width, height))
+    !impl->UpdateVisibleMesh(window) || !impl->UpdatePrograms(window) || !impl->UpdateTargets(window, width, height))
   {
     return;
   }
@@ -2434,9 +2443,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetRendered(true);
   stats->SetImageSize(impl->ImageSize);
-  stats->SetMeshBytes(impl->MeshBytes);
+  // The layout's textures, the faces rays enter by and the visible bits.
+  const vtkIdType meshBytes = impl->MeshBytes + impl->VisibleMesh.GetBytes();
+  stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
-    impl->NumberOfTets > 0 ? static_cast<double>(impl->MeshBytes) / impl->NumberOfTets : 0.0);
+    impl->NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->NumberOfTets : 0.0);
   stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
   stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");

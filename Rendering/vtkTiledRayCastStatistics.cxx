@@ -109,8 +109,9 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
          << this->MinimumPassesPerTile << ", median " << this->MedianPassesPerTile << ", max "
          << this->MaximumPassesPerTile << ")";
   }
-  text << ", " << this->NumberOfRaysTerminatedEarly
-       << " rays terminated early; GPU ms: " << (compute ? "entry pass " : "first hit ")
+  text << ", " << this->NumberOfRaysTerminatedEarly << " rays terminated early, "
+       << this->NumberOfVisibleTetrahedra << " tets visible, " << this->NumberOfEntryFaces
+       << " entry faces; GPU ms: " << (compute ? "entry pass " : "first hit ")
        << this->FirstHitTime;
   if (!compute)
   {
@@ -162,4 +163,6 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes << "\n";
   os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize[0] << " "
      << this->PreIntegrationTableSize[1] << " " << this->PreIntegrationTableSize[2] << "\n";
+  os << indent << "NumberOfVisibleTetrahedra: " << this->NumberOfVisibleTetrahedra << "\n";
+  os << indent << "NumberOfEntryFaces: " << this->NumberOfEntryFaces << "\n";
 }

@@ -236,6 +236,18 @@ public:
   vtkGetVector3Macro(PreIntegrationTableSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Empty-space skipping (vtkTiledRayCastVolumeMapper::SetEmptySpaceSkipping): the tetrahedra
+   * the transfer function leaves visible (all of them when nothing is skipped), and the faces
+   * rays enter the mesh by (its boundary faces, or those of its visible part).
+   */
+  vtkSetMacro(NumberOfVisibleTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfVisibleTetrahedra, vtkIdType);
+  vtkSetMacro(NumberOfEntryFaces, vtkIdType);
+  vtkGetMacro(NumberOfEntryFaces, vtkIdType);
+  ///@}
+
 #ifndef __VTK_WRAP__
   /**
    * Per-tile pass counts of the last render (tiles that ran no pass are left out); the mapper
@@ -291,6 +303,8 @@ protected:
   vtkIdType RenderTargetBytes = 0;
   double MeshBytesPerTetrahedron = 0;
   int NumberOfTransferFunctionNodes = 0;
+  vtkIdType NumberOfVisibleTetrahedra = 0;
+  vtkIdType NumberOfEntryFaces = 0;
   int PreIntegrationTableSize[3] = { 0, 0, 0 };
   std::vector<int> PassesPerTile;
 

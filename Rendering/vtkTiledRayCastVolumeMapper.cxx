@@ -132,6 +132,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";
   os << indent << "TileSize: " << this->TileSize << "\n";
   os << indent << "EarlyRayTerminationOpacity: " << this->EarlyRayTerminationOpacity << "\n";
+  os << indent << "EmptySpaceSkipping: " << (this->EmptySpaceSkipping ? "On" : "Off") << "\n";
   os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "AverageIPScalarRange: " << this->AverageIPScalarRange[0] << " "
      << this->AverageIPScalarRange[1] << "\n";

@@ -243,6 +243,20 @@ public:
 
   ///@{
   /**
+   * Empty-space skipping by the transfer function (composite blending only): tetrahedra whose
+   * scalars all map to zero opacity are left out of the walk, and rays jump over each run of
+   * them to the next face of the visible part of the mesh (the depth peeling of non-convex
+   * meshes). The image is the same; the statistics count the visible tetrahedra and the faces
+   * rays enter them by. Reclassified only when the transfer function or the scalars change
+   * (a pass over the tetrahedra, in TransferFunctionBuildTime). Default on.
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  ///@{
+  /**
    * A ray stops once its accumulated opacity reaches this value (early ray termination). 1
    * disables early termination. The colour left out is at most 1 - this value. Default 0.999.
    */
@@ -388,6 +402,7 @@ protected:
   int OcclusionQueryInterval = 4;
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
+  bool EmptySpaceSkipping = true;
   double AverageIPScalarRange[2] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MAX };
   int MaximumNumberOfPassesPerLayer = 1000000;
   int VectorMode = DEFAULT;

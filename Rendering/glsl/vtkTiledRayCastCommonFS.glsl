@@ -196,3 +196,15 @@ TrcRay trcPixelRay(vec2 fragCoord)
 // Points of face f (opposite point f), counter-clockwise seen from outside.
 const ivec3 trcFacePoints[4] = ivec3[4](ivec3(1, 2, 3), ivec3(0, 3, 2), ivec3(0, 1, 3),
   ivec3(0, 2, 1));
+
+#ifdef TRC_SKIP_EMPTY_SPACE
+// Empty-space skipping: one bit per tet, 1 where the transfer function leaves it visible
+// (vtkTiledRayCastEmptySpace). Rays enter the visible part by its own boundary faces and leave
+// it where the next tet is invisible.
+uniform usamplerBuffer in_visibleTets;
+
+bool trcTetVisible(uint tet)
+{
+  return (texelFetch(in_visibleTets, int(tet >> 5u)).r & (1u << (tet & 31u))) != 0u;
+}
+#endif

@@ -46,6 +46,12 @@ void trcEmit(vec3 q)
 void main()
 {
   uint tet = ip_vertexTet[0];
+#ifdef TRC_SKIP_EMPTY_SPACE
+  if (!trcTetVisible(tet))
+  {
+    return; // rays from here start at the visible part's faces behind
+  }
+#endif
   vec3 p[4];
   trcTetPoints(tet, p);
   float d[4];

@@ -109,7 +109,13 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
     else
     {
       uint next = trcNeighborTet(neighborWords, exitFace);
-      if (next == TRC_NO_NEIGHBOR || stalls > TRC_MAXIMUM_STALLS)
+#ifdef TRC_SKIP_EMPTY_SPACE
+      // An invisible tet ends the visible part: the ray jumps to the next of its faces behind.
+      bool leaves = next == TRC_NO_NEIGHBOR || !trcTetVisible(next);
+#else
+      bool leaves = next == TRC_NO_NEIGHBOR;
+#endif
+      if (leaves || stalls > TRC_MAXIMUM_STALLS)
       {
         status = TRC_WAITING;
       }

@@ -74,6 +74,33 @@ inline vtkSmartPointer<vtkVolumeProperty> MakePropertyFor(
   return MakeProperty(range[0], range[1], fraction * grid->GetLength(), narrowFeature);
 }
 
+// Opacity only over [lo + at w, lo + (at + width) w] of the range [lo, lo + w]: zero at both
+// ends of that band and 1 in its middle, zero elsewhere (how people explore CFD data, and what
+// empty-space skipping is for); the ramp's colours over the whole range.
+inline vtkSmartPointer<vtkVolumeProperty> MakeBandProperty(
+  const double range[2], double at, double width, double unitDistance)
+{
+  const double w = range[1] - range[0];
+  const double a = range[0] + at * w;
+  const double b = a + width * w;
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(range[0], 0.1, 0.3, 1.0);
+  color->AddRGBPoint(range[0] + 0.4 * w, 0.2, 0.9, 0.4);
+  color->AddRGBPoint(range[0] + 0.7 * w, 1.0, 0.9, 0.1);
+  color->AddRGBPoint(range[1], 1.0, 0.2, 0.1);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(range[0], 0.0);
+  opacity->AddPoint(a, 0.0);
+  opacity->AddPoint(0.5 * (a + b), 1.0);
+  opacity->AddPoint(b, 0.0);
+  opacity->AddPoint(range[1], 0.0);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  return property;
+}
+
 // The length of the diagonal of `bounds` (xmin, xmax, ymin, ...).
 inline double Diagonal(const double bounds[6])
 {

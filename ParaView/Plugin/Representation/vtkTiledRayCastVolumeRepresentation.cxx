@@ -79,6 +79,18 @@ double vtkTiledRayCastVolumeRepresentation::GetTiledRayCastEarlyTerminationOpaci
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastEmptySpaceSkipping(int skipping)
+{
+  this->TiledRayCastMapper->SetEmptySpaceSkipping(skipping != 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeRepresentation::GetTiledRayCastEmptySpaceSkipping()
+{
+  return this->TiledRayCastMapper->GetEmptySpaceSkipping() ? 1 : 0;
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeRepresentation::GetTiledRayCastStatistics()
 {
   vtkTiledRayCastStatistics* statistics = this->TiledRayCastMapper->GetStatistics();

@@ -50,7 +50,8 @@ public:
   ///@{
   /**
    * Settings of the tiled ray-cast mapper (see vtkTiledRayCastVolumeMapper): integration mode,
-   * pipeline, tile size of the fragment pipeline, opacity at which rays stop.
+   * pipeline, tile size of the fragment pipeline, opacity at which rays stop, empty-space
+   * skipping.
    */
   void SetTiledRayCastIntegrationMode(int mode);
   int GetTiledRayCastIntegrationMode();
@@ -60,6 +61,8 @@ public:
   int GetTiledRayCastTileSize();
   void SetTiledRayCastEarlyTerminationOpacity(double opacity);
   double GetTiledRayCastEarlyTerminationOpacity();
+  void SetTiledRayCastEmptySpaceSkipping(int skipping);
+  int GetTiledRayCastEmptySpaceSkipping();
   ///@}
 
   /**
