@@ -35,8 +35,12 @@ vtkTetReferenceScene::vtkTetReferenceScene()
   this->ErrorForwarder->SetCallback(
     [](vtkObject*, unsigned long, void* clientData, void* callData)
     {
-      const char* text = static_cast<const char*>(callData);
-      *static_cast<std::string*>(clientData) = text ? text : "";
+      // VTK's message reads "ERROR: In <file>, line <n>\n<class> (<address>): <text>\n": keep
+      // the text.
+      std::string text = callData ? static_cast<const char*>(callData) : "";
+      const size_t begin = text.find("): ");
+      text = begin == std::string::npos ? text : text.substr(begin + 3);
+      *static_cast<std::string*>(clientData) = text.substr(0, text.find_last_not_of("\n") + 1);
     });
 }
 
