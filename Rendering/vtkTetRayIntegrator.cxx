@@ -361,8 +361,8 @@ void vtkTetRayIntegrator::IntegrateMixture(int numberOfMedia,
     tolerance = std::min(tolerance, integrators[i]->Tolerance);
     const std::vector<double>& breaks = integrators[i]->Internals->Pieces.Breaks;
     const double lo = std::min(sf[i], sb[i]), hi = std::max(sf[i], sb[i]);
-    for (auto b = std::upper_bound(breaks.begin(), breaks.end(), lo);
-         b != breaks.end() && *b < hi; ++b)
+    for (auto b = std::upper_bound(breaks.begin(), breaks.end(), lo); b != breaks.end() && *b < hi;
+         ++b)
     {
       const double u = (*b - sf[i]) / (sb[i] - sf[i]);
       if (u > 0.0 && u < 1.0)
@@ -389,9 +389,8 @@ void vtkTetRayIntegrator::IntegrateMixture(int numberOfMedia,
         cut = true;
         break;
       }
-      const vtkTetRayIntegratorQuadrature::PieceResult piece =
-        vtkInternals::MixturePiece(media, integrators, sf, sb, cuts[p], cuts[p + 1], len,
-          std::exp(-total.Depth), tolerance);
+      const vtkTetRayIntegratorQuadrature::PieceResult piece = vtkInternals::MixturePiece(
+        media, integrators, sf, sb, cuts[p], cuts[p + 1], len, std::exp(-total.Depth), tolerance);
       total = vtkTetRayIntegratorQuadrature::Combine(total, piece);
     }
     ta = te;
@@ -444,8 +443,8 @@ vtkTetRayIntegratorQuadrature::PieceResult vtkTetRayIntegrator::vtkInternals::Mi
   {
     return vtkTetRayIntegratorQuadrature::IntegrateLinearMixture(len, tau0, tau1, c0, c1);
   }
-  return vtkTetRayIntegratorQuadrature::IntegrateAdaptiveMixture(adaptive, len, transmittance,
-    tolerance, integrators[media[0]]->Internals->Unconverged);
+  return vtkTetRayIntegratorQuadrature::IntegrateAdaptiveMixture(
+    adaptive, len, transmittance, tolerance, integrators[media[0]]->Internals->Unconverged);
 }
 
 //------------------------------------------------------------------------------

@@ -434,8 +434,8 @@ void vtkTetRayIntegratorQuadrature::EstimateRoundingNoise(const Evaluator& f, co
 //------------------------------------------------------------------------------
 template <typename Evaluator>
 vtkTetRayIntegratorQuadrature::PieceResult vtkTetRayIntegratorQuadrature::Adapt(Evaluator& f,
-  double len, double a, double b, const PieceResult& coarse, double transmittance,
-  double tolerance, int level, std::atomic<vtkIdType>& unconverged)
+  double len, double a, double b, const PieceResult& coarse, double transmittance, double tolerance,
+  int level, std::atomic<vtkIdType>& unconverged)
 {
   const double mid = 0.5 * (a + b);
   const PieceResult left = Panel(f, len, a, mid);
@@ -466,8 +466,8 @@ vtkTetRayIntegratorQuadrature::PieceResult vtkTetRayIntegratorQuadrature::Adapt(
   }
   const PieceResult l =
     Adapt(f, len, a, mid, left, transmittance, tolerance, level + 1, unconverged);
-  const PieceResult r = Adapt(f, len, mid, b, right, transmittance * std::exp(-l.Depth), tolerance,
-    level + 1, unconverged);
+  const PieceResult r = Adapt(
+    f, len, mid, b, right, transmittance * std::exp(-l.Depth), tolerance, level + 1, unconverged);
   return Combine(l, r);
 }
 

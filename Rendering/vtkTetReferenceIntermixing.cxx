@@ -138,14 +138,16 @@ void vtkTetReferenceIntermixing::CollectFragments(const vtkTetReferencePixelRays
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceIntermixing::Composite(Scratch& scratch, double unitLength, double rgba[4]) const
+void vtkTetReferenceIntermixing::Composite(
+  Scratch& scratch, double unitLength, double rgba[4]) const
 {
   std::vector<Segment>& segments = scratch.Segments;
   std::vector<Fragment>& fragments = scratch.Fragments;
   std::sort(segments.begin(), segments.end(),
     [](const Segment& a, const Segment& b)
     { return a.T0 != b.T0 ? a.T0 < b.T0 : (a.T1 != b.T1 ? a.T1 < b.T1 : a.Medium < b.Medium); });
-  std::sort(fragments.begin(), fragments.end(), [](const Fragment& a, const Fragment& b)
+  std::sort(fragments.begin(), fragments.end(),
+    [](const Fragment& a, const Fragment& b)
     { return a.T != b.T ? a.T < b.T : a.Layer < b.Layer; });
   // Every place where the set of media changes or a fragment lies.
   std::vector<double>& cuts = scratch.Cuts;
@@ -185,8 +187,8 @@ void vtkTetReferenceIntermixing::Composite(Scratch& scratch, double unitLength, 
       break;
     }
     const double e1 = cuts[k + 1];
-    active.erase(std::remove_if(active.begin(), active.end(),
-                   [&](int s) { return segments[s].T1 <= e0; }),
+    active.erase(
+      std::remove_if(active.begin(), active.end(), [&](int s) { return segments[s].T1 <= e0; }),
       active.end());
     for (; nextSegment < segments.size() && segments[nextSegment].T0 <= e0; ++nextSegment)
     {
@@ -217,8 +219,8 @@ void vtkTetReferenceIntermixing::Composite(Scratch& scratch, double unitLength, 
 //------------------------------------------------------------------------------
 // The active segments between cuts e0 and e1: one medium by its integrator, several as a
 // mixture.
-void vtkTetReferenceIntermixing::IntegrateInterval(Scratch& scratch, double e0, double e1,
-  double unitLength, double segment[4], double& depth) const
+void vtkTetReferenceIntermixing::IntegrateInterval(
+  Scratch& scratch, double e0, double e1, double unitLength, double segment[4], double& depth) const
 {
   const double length = (e1 - e0) * unitLength;
   if (scratch.Active.size() == 1)

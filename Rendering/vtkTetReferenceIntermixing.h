@@ -46,7 +46,7 @@ public:
   };
   struct Layer
   {
-    std::vector<double> RGBA; // premultiplied, 4 per pixel
+    std::vector<double> RGBA;     // premultiplied, 4 per pixel
     const float* Depth = nullptr; // window z per pixel; 1 means no fragment
   };
 
@@ -88,8 +88,8 @@ public:
    * The premultiplied RGBA of pixel (i, j) of `rays` (world coordinates: null Center), and the
    * number of tetrahedra its ray crossed (all media).
    */
-  void CastRay(const vtkTetReferencePixelRays& rays, int i, int j, Scratch& scratch,
-    double rgba[4], int& count) const;
+  void CastRay(const vtkTetReferencePixelRays& rays, int i, int j, Scratch& scratch, double rgba[4],
+    int& count) const;
 
   /**
    * Front-to-back compositing of `segments` and `fragments` (any order; both are sorted here)

@@ -116,8 +116,8 @@ bool vtkTetReferencePixelRays::Get(
   }
   // Measure the ray from its point nearest to the mesh centre (the origin here): the vertex
   // coordinates of the ray frame then stay as small as the mesh.
-  const double lambdaC = std::min(
-    lambdaMax, std::max(0.0, -(nearP[0] * d[0] + nearP[1] * d[1] + nearP[2] * d[2]) / dd));
+  const double lambdaC =
+    std::min(lambdaMax, std::max(0.0, -(nearP[0] * d[0] + nearP[1] * d[1] + nearP[2] * d[2]) / dd));
   for (int k = 0; k < 3; ++k)
   {
     origin[k] = nearP[k] + lambdaC * d[k];

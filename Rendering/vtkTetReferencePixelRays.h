@@ -74,8 +74,8 @@ private:
   void Unproject(double x, double y, double z, double p[3]) const;
   // The part (lambdaMin, lambdaMax) of the ray nearP + lambda d of pixel `pixel` (at NDC x, y)
   // left by the opaque depth and the clipping planes; false when nothing is left.
-  bool Range(double x, double y, long long pixel, const double nearP[3], const double d[3], double dd,
-    double& lambdaMin, double& lambdaMax) const;
+  bool Range(double x, double y, long long pixel, const double nearP[3], const double d[3],
+    double dd, double& lambdaMin, double& lambdaMax) const;
 };
 
 #endif

@@ -480,7 +480,8 @@ bool vtkTetReferenceRenderer::PrepareMesh(vtkVolumeProperty* property)
   vtkTetReferenceScene::Source source;
   source.Input = this->Input;
   source.Property = property;
-  vtkMatrix4x4::DeepCopy(source.Matrix, this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix);
+  vtkMatrix4x4::DeepCopy(
+    source.Matrix, this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix);
   source.ScalarMode = this->ScalarMode;
   source.ArrayAccessMode = this->ArrayAccessMode;
   source.ArrayId = this->ArrayId;
@@ -551,8 +552,7 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
   for (size_t l = 0; l < in.Layers.size(); ++l)
   {
     std::string error;
-    if (!vtkTetReferenceScene::CheckLayer(
-          in.Layers[l].RGBA, in.Layers[l].Depth, numPixels, error))
+    if (!vtkTetReferenceScene::CheckLayer(in.Layers[l].RGBA, in.Layers[l].Depth, numPixels, error))
     {
       vtkErrorMacro("Translucent layer " << l << ": " << error);
       return 0;
@@ -595,8 +595,7 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
     source.VectorComponent = volume->GetVectorComponent();
   }
   std::string error;
-  if (!in.Scene.Prepare(
-        sources, this->Input ? 1 : 0, tetrahedra, this->LastPreparationTime, error))
+  if (!in.Scene.Prepare(sources, this->Input ? 1 : 0, tetrahedra, this->LastPreparationTime, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -683,8 +682,8 @@ vtkTetReferenceVolume* vtkTetReferenceRenderer::GetAddedVolume(int i)
 {
   if (i < 0 || i >= this->GetNumberOfAddedVolumes())
   {
-    vtkErrorMacro("No added volume " << i << " (there are " << this->GetNumberOfAddedVolumes()
-                                     << ").");
+    vtkErrorMacro(
+      "No added volume " << i << " (there are " << this->GetNumberOfAddedVolumes() << ").");
     return nullptr;
   }
   return this->Internals->Added[i];

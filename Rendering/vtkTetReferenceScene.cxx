@@ -202,9 +202,8 @@ bool vtkTetReferenceScene::CheckLayer(
     if (!(z >= 0.0f && z <= 1.0f) || !(a >= 0.0 && a <= 1.0) || !finite)
     {
       error = "pixel " + std::to_string(p) + " has depth " + std::to_string(z) + " and RGBA (" +
-        std::to_string(rgba->GetComponent(p, 0)) + ", " +
-        std::to_string(rgba->GetComponent(p, 1)) + ", " +
-        std::to_string(rgba->GetComponent(p, 2)) + ", " + std::to_string(a) +
+        std::to_string(rgba->GetComponent(p, 0)) + ", " + std::to_string(rgba->GetComponent(p, 1)) +
+        ", " + std::to_string(rgba->GetComponent(p, 2)) + ", " + std::to_string(a) +
         "): depths must lie in [0, 1], alpha in [0, 1], colours be finite.";
       return false;
     }

@@ -108,8 +108,8 @@ public:
    * Every pixel of `rays` through `scene` into `rgba` (float or double, the other null) and
    * `counts`.
    */
-  static void CastRays(const vtkTetReferenceIntermixing& scene, const vtkTetReferencePixelRays& rays,
-    float* rgbaFloat, double* rgbaDouble, int* counts);
+  static void CastRays(const vtkTetReferenceIntermixing& scene,
+    const vtkTetReferencePixelRays& rays, float* rgbaFloat, double* rgbaDouble, int* counts);
 
 private:
   struct Prepared

@@ -46,8 +46,8 @@ struct Medium
 // The expected RGBA of the ray nearP + t d, media seen for t in [0, tEnd], fragments at the
 // ray parameters of `fragments` (T, then premultiplied RGBA), from analytic chords. False when
 // the ray passes within 1e-7 of a box face (a silhouette: the chord is not defined better).
-bool Expected(const double nearP[3], const double d[3], double tEnd, const std::vector<Medium>& media,
-  std::vector<std::array<double, 5>> fragments, double rgba[4])
+bool Expected(const double nearP[3], const double d[3], double tEnd,
+  const std::vector<Medium>& media, std::vector<std::array<double, 5>> fragments, double rgba[4])
 {
   const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
   std::vector<double> cuts;
@@ -231,9 +231,9 @@ int CheckScene(vtkImageData* image, vtkCamera* camera, int w, int h,
       worst = std::max(worst, diff);
       if (!(diff <= bound))
       {
-        std::cerr << what << ": pixel (" << i << ", " << j << ") RGBA " << rgba[0] << " "
-                  << rgba[1] << " " << rgba[2] << " " << rgba[3] << ", expected " << expected[0]
-                  << " " << expected[1] << " " << expected[2] << " " << expected[3] << std::endl;
+        std::cerr << what << ": pixel (" << i << ", " << j << ") RGBA " << rgba[0] << " " << rgba[1]
+                  << " " << rgba[2] << " " << rgba[3] << ", expected " << expected[0] << " "
+                  << expected[1] << " " << expected[2] << " " << expected[3] << std::endl;
         return -1;
       }
       seen += trc::TetCount(image, i, j) > 0 ? 1 : 0;
@@ -287,8 +287,10 @@ int TestOverlappingVolumes()
     const char* Name;
     vtkSmartPointer<vtkCamera> Camera;
   };
-  const Case cases[] = { { "A, B, C along x", trc::MakeCamera(focal, along, Up, 20.0, true, 3.5, 1.0, 40.0) },
-    { "A, B, C oblique perspective", trc::MakeCamera(focal, oblique, Up, 16.0, false, 35.0, 1.0, 40.0) },
+  const Case cases[] = { { "A, B, C along x",
+                           trc::MakeCamera(focal, along, Up, 20.0, true, 3.5, 1.0, 40.0) },
+    { "A, B, C oblique perspective",
+      trc::MakeCamera(focal, oblique, Up, 16.0, false, 35.0, 1.0, 40.0) },
     { "A, B, C, camera inside A and B", inside } };
   for (const Case& k : cases)
   {
@@ -350,8 +352,8 @@ int TestLayers()
           renderer->AddTranslucentLayer(layer->RGBA, layer->Depth);
         }
         renderer->SetOpaqueDepth(opaqueCase ? depth.Get() : nullptr);
-        vtkImageData* image =
-          trc::RenderImage(renderer, a, trc::ConstantProperty(media[0].Tau, media[0].C), camera, w, h);
+        vtkImageData* image = trc::RenderImage(
+          renderer, a, trc::ConstantProperty(media[0].Tau, media[0].C), camera, w, h);
         TRC_CHECK(image);
         const std::string what = std::string(parallel ? "parallel" : "perspective") + ", " +
           std::to_string(n) + " layer(s)" + (opaqueCase ? ", opaque depth" : "");
