@@ -64,6 +64,11 @@ public:
     }
     return slot.Functions;
   }
+
+  // One piece of IntegrateMixture() (see there).
+  static vtkTetRayIntegratorQuadrature::PieceResult MixturePiece(const std::vector<int>& media,
+    vtkTetRayIntegrator* const integrators[], const double sf[], const double sb[], double ua,
+    double ub, double len, double transmittance, double tolerance);
 };
 
 //------------------------------------------------------------------------------
@@ -311,6 +316,135 @@ void vtkTetRayIntegrator::IntegrateWithDepth(
   {
     *opticalDepth = cut ? std::numeric_limits<double>::infinity() : depth;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTetRayIntegrator::IntegrateMixture(int numberOfMedia,
+  vtkTetRayIntegrator* const integrators[], const double sf[], const double sb[], double length,
+  double rgba[4], double* opticalDepth)
+{
+  rgba[0] = rgba[1] = rgba[2] = rgba[3] = 0.0;
+  if (opticalDepth)
+  {
+    *opticalDepth = 0.0;
+  }
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return;
+  }
+  // The media that contribute (as IntegrateWithDepth() leaves the others out).
+  std::vector<int> media;
+  for (int i = 0; i < numberOfMedia; ++i)
+  {
+    if (integrators[i] && integrators[i]->Internals->Ready && std::isfinite(sf[i]) &&
+      std::isfinite(sb[i]))
+    {
+      media.push_back(i);
+    }
+  }
+  if (media.empty())
+  {
+    return;
+  }
+  if (media.size() == 1)
+  {
+    const int i = media[0];
+    integrators[i]->IntegrateWithDepth(sf[i], sb[i], length, rgba, opticalDepth);
+    return;
+  }
+
+  // Where any medium crosses one of its breakpoints, as a fraction u of the segment.
+  std::vector<double> cuts = { 0.0 };
+  double tolerance = 1.0;
+  for (int i : media)
+  {
+    tolerance = std::min(tolerance, integrators[i]->Tolerance);
+    const std::vector<double>& breaks = integrators[i]->Internals->Pieces.Breaks;
+    const double lo = std::min(sf[i], sb[i]), hi = std::max(sf[i], sb[i]);
+    for (auto b = std::upper_bound(breaks.begin(), breaks.end(), lo); b != breaks.end() && *b < hi;
+         ++b)
+    {
+      const double u = (*b - sf[i]) / (sb[i] - sf[i]);
+      if (u > 0.0 && u < 1.0)
+      {
+        cuts.push_back(u);
+      }
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  cuts.push_back(1.0);
+
+  vtkTetRayIntegratorQuadrature::PieceResult total;
+  bool cut = false;
+  double ta = 0.0;
+  for (size_t p = 0; p + 1 < cuts.size(); ++p)
+  {
+    const double te = p + 2 == cuts.size() ? length : length * cuts[p + 1];
+    const double len = te - ta;
+    if (len > 0.0)
+    {
+      if (total.Depth > vtkTetRayIntegratorQuadrature::CutOffDepth)
+      {
+        cut = true;
+        break;
+      }
+      const vtkTetRayIntegratorQuadrature::PieceResult piece = vtkInternals::MixturePiece(
+        media, integrators, sf, sb, cuts[p], cuts[p + 1], len, std::exp(-total.Depth), tolerance);
+      total = vtkTetRayIntegratorQuadrature::Combine(total, piece);
+    }
+    ta = te;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    rgba[i] = total.C[i];
+  }
+  rgba[3] = -std::expm1(-total.Depth);
+  if (opticalDepth)
+  {
+    *opticalDepth = cut ? std::numeric_limits<double>::infinity() : total.Depth;
+  }
+}
+
+//------------------------------------------------------------------------------
+// One piece [ua, ub] (fractions of the segment, length len) of a mixture, on which no medium
+// crosses a breakpoint: in closed form where every medium is linear there, adaptively otherwise.
+vtkTetRayIntegratorQuadrature::PieceResult vtkTetRayIntegrator::vtkInternals::MixturePiece(
+  const std::vector<int>& media, vtkTetRayIntegrator* const integrators[], const double sf[],
+  const double sb[], double ua, double ub, double len, double transmittance, double tolerance)
+{
+  const size_t n = media.size();
+  std::vector<double> tau0(n), tau1(n), c0(3 * n), c1(3 * n);
+  std::vector<vtkTetRayIntegratorQuadrature::Medium> adaptive(n);
+  bool linear = true;
+  for (size_t k = 0; k < n; ++k)
+  {
+    const int i = media[k];
+    const vtkInternals& in = *integrators[i]->Internals;
+    const double sa = ua == 0.0 ? sf[i] : sf[i] + (sb[i] - sf[i]) * ua;
+    const double se = ub == 1.0 ? sb[i] : sf[i] + (sb[i] - sf[i]) * ub;
+    const size_t idx = in.Pieces.IntervalIndex(0.5 * (sa + se));
+    // A constant scalar on a breakpoint takes VTK's own value there, as IntegrateWithDepth().
+    const bool atBreak = sa == se && idx > 0 && in.Pieces.Breaks[idx - 1] == sa;
+    if (linear && !atBreak && in.Pieces.Intervals[idx].Linear && integrators[i]->UseClosedForm)
+    {
+      in.Pieces.LinearValues(in.Pieces.Intervals[idx], sa, tau0[k], &c0[3 * k]);
+      in.Pieces.LinearValues(in.Pieces.Intervals[idx], se, tau1[k], &c1[3 * k]);
+    }
+    else
+    {
+      linear = false;
+    }
+    adaptive[k].Functions = &in.Local();
+    adaptive[k].S0 = sa;
+    adaptive[k].S1 = se;
+  }
+  if (linear)
+  {
+    return vtkTetRayIntegratorQuadrature::IntegrateLinearMixture(len, tau0, tau1, c0, c1);
+  }
+  return vtkTetRayIntegratorQuadrature::IntegrateAdaptiveMixture(
+    adaptive, len, transmittance, tolerance, integrators[media[0]]->Internals->Unconverged);
 }
 
 //------------------------------------------------------------------------------

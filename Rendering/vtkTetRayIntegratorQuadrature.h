@@ -17,6 +17,11 @@
  * IntegrateLinear in closed form where attenuation and colour are linear in the scalar
  * (Gauss-Legendre panels of bounded optical depth, see vtkTetRayIntegrator.h), IntegrateAdaptive
  * by adaptive Gauss-Legendre quadrature of VTK's own evaluations everywhere else.
+ *
+ * Where several media overlap (vtkTetRayIntegratorMixture), a piece is integrated for their sum:
+ * attenuation sum(tau_i), emission sum(tau_i c_i). IntegrateLinearMixture is the closed form
+ * where every medium is linear, IntegrateAdaptiveMixture the adaptive quadrature of the sums
+ * elsewhere (the same panels, estimates and tolerance as a single medium's).
  */
 
 #ifndef vtkTetRayIntegratorQuadrature_h
@@ -25,6 +30,7 @@
 #include "vtkType.h" // For vtkIdType
 
 #include <atomic> // For std::atomic
+#include <vector> // For std::vector
 
 class vtkTetRayIntegratorFunctions;
 
@@ -70,14 +76,43 @@ public:
   static PieceResult IntegrateAdaptive(vtkTetRayIntegratorFunctions& f, double sa, double sb,
     double len, double transmittance, double tolerance, std::atomic<vtkIdType>& unconverged);
 
+  /**
+   * One medium of a mixture along a piece: its functions (a thread's copy) and its scalar, going
+   * linearly from S0 at the piece's start to S1 at its end.
+   */
+  struct Medium
+  {
+    vtkTetRayIntegratorFunctions* Functions = nullptr;
+    double S0 = 0.0, S1 = 0.0;
+  };
+
+  /**
+   * Closed form for a mixture on a piece of length len where every medium i has linear
+   * attenuation (tau0[i] to tau1[i]) and colour (c0[i] to c1[i]): the emission
+   * sum(tau_i c_i) times the transmittance of sum(tau_i), integrated by 12-point Gauss-Legendre
+   * on panels of optical depth <= 2 (the integrand is positive: no cancellation).
+   */
+  static PieceResult IntegrateLinearMixture(double len, const std::vector<double>& tau0,
+    const std::vector<double>& tau1, const std::vector<double>& c0, const std::vector<double>& c1);
+
+  /**
+   * Adaptive quadrature of the mixture `media` along a piece of length len, seen through
+   * `transmittance`, to `tolerance` (as IntegrateAdaptive).
+   */
+  static PieceResult IntegrateAdaptiveMixture(const std::vector<Medium>& media, double len,
+    double transmittance, double tolerance, std::atomic<vtkIdType>& unconverged);
+
 private:
-  static PieceResult Panel(
-    vtkTetRayIntegratorFunctions& f, double sa, double sb, double len, double a, double b);
-  static void EstimateRoundingNoise(const double tau[], const double c[][3], double sa, double sb,
+  // Panel, EstimateRoundingNoise and Adapt work on an evaluator of the attenuation and colour
+  // along the piece (one medium, or a mixture's sums): see the .cxx.
+  template <typename Evaluator>
+  static PieceResult Panel(Evaluator& f, double len, double a, double b);
+  template <typename Evaluator>
+  static void EstimateRoundingNoise(const Evaluator& f, const double tau[], const double c[][3],
     double len, double a, double b, PieceResult& r);
-  static PieceResult Adapt(vtkTetRayIntegratorFunctions& f, double sa, double sb, double len,
-    double a, double b, const PieceResult& coarse, double transmittance, double tolerance,
-    int level, std::atomic<vtkIdType>& unconverged);
+  template <typename Evaluator>
+  static PieceResult Adapt(Evaluator& f, double len, double a, double b, const PieceResult& coarse,
+    double transmittance, double tolerance, int level, std::atomic<vtkIdType>& unconverged);
 };
 
 #endif

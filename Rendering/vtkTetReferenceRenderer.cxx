@@ -20,7 +20,6 @@
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
@@ -31,7 +30,10 @@
 #include "vtkTetReferenceBlending.h"
 #include "vtkTetReferenceCompositing.h"
 #include "vtkTetReferenceMesh.h"
+#include "vtkTetReferencePixelRays.h"
 #include "vtkTetReferenceRayCaster.h"
+#include "vtkTetReferenceScene.h"
+#include "vtkTetReferenceVolume.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkVolume.h"
@@ -45,129 +47,15 @@
 
 // The renderer is a pipeline of private classes: vtkTetReferenceMesh (preparation: the
 // tetrahedra in world coordinates and their bounding volume hierarchy, vtkTetReferenceBVH),
-// vtkTetReferenceRayCaster (the tetrahedra each ray crosses, exactly) and
-// vtkTetReferenceCompositing (front-to-back compositing with vtkTetRayIntegrator).
+// vtkTetReferencePixelRays (the camera's rays), vtkTetReferenceRayCaster (the tetrahedra each ray
+// crosses, exactly) and vtkTetReferenceCompositing (front-to-back compositing with
+// vtkTetRayIntegrator); for scenes of several volumes or with translucent layers,
+// vtkTetReferenceIntermixing (all media and fragments of a ray in depth order) instead of the
+// last (RenderScene(), in vtkTetReferenceRendererScene.cxx).
 namespace
 {
 using Hit = vtkTetReferenceRayCaster::Hit;
-
-//------------------------------------------------------------------------------
-// The camera's rays through the pixels of the image, in the prepared mesh's frame (world
-// coordinates minus its centre), each clipped to the opaque depth and the clipping planes.
-class PixelRays
-{
-public:
-  int Width = 0, Height = 0;
-  double OffsetX = 0.5, OffsetY = 0.5;
-  const float* Depth = nullptr;
-  double Inverse[16]; // clip coordinates to world coordinates
-  const double* Center = nullptr;
-  // Clipping planes in the rays' frame, (n, d) with n.x + d >= 0 kept.
-  std::vector<std::array<double, 4>> Clipping;
-
-  // The planes (world coordinates, the side the normal points to kept) in the rays' frame;
-  // call after Center is set.
-  void SetClippingPlanes(vtkPlaneCollection* planes)
-  {
-    this->Clipping.clear();
-    for (int k = 0; planes && k < planes->GetNumberOfItems(); ++k)
-    {
-      vtkPlane* plane = planes->GetItem(k);
-      std::array<double, 4> h;
-      plane->GetNormal(h.data());
-      double origin[3];
-      plane->GetOrigin(origin);
-      h[3] = 0.0;
-      for (int r = 0; r < 3; ++r)
-      {
-        h[3] -= h[r] * (origin[r] - this->Center[r]);
-      }
-      if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)
-      {
-        this->Clipping.push_back(h);
-      }
-    }
-  }
-
-  void Unproject(double x, double y, double z, double p[3]) const
-  {
-    const double* inverse = this->Inverse;
-    double h[4];
-    for (int r = 0; r < 4; ++r)
-    {
-      h[r] =
-        inverse[4 * r] * x + inverse[4 * r + 1] * y + inverse[4 * r + 2] * z + inverse[4 * r + 3];
-    }
-    for (int r = 0; r < 3; ++r)
-    {
-      p[r] = h[r] / h[3] - this->Center[r];
-    }
-  }
-
-  // The ray of pixel (i, j): origin + z d for z in (zmin, zmax). False for a pixel with no ray
-  // (a degenerate direction, opaque geometry at the near plane, or clipped away).
-  bool Get(int i, int j, double origin[3], double d[3], double& zmin, double& zmax) const
-  {
-    const vtkIdType pixel = static_cast<vtkIdType>(j) * this->Width + i;
-    const double x = 2.0 * (i + this->OffsetX) / this->Width - 1.0;
-    const double y = 2.0 * (j + this->OffsetY) / this->Height - 1.0;
-    double nearP[3], farP[3];
-    this->Unproject(x, y, -1.0, nearP);
-    this->Unproject(x, y, 1.0, farP);
-    for (int k = 0; k < 3; ++k)
-    {
-      d[k] = farP[k] - nearP[k];
-    }
-    const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    if (!(dd > 0.0) || !std::isfinite(dd))
-    {
-      return false;
-    }
-    double lambdaMax = 1.0;
-    if (this->Depth && this->Depth[pixel] < 1.0f)
-    {
-      double p[3];
-      this->Unproject(x, y, 2.0 * this->Depth[pixel] - 1.0, p);
-      lambdaMax =
-        ((p[0] - nearP[0]) * d[0] + (p[1] - nearP[1]) * d[1] + (p[2] - nearP[2]) * d[2]) / dd;
-      lambdaMax = std::min(1.0, std::max(0.0, lambdaMax));
-    }
-    // The kept half-spaces of the clipping planes cut the ray to [lambdaMin, lambdaMax].
-    double lambdaMin = 0.0;
-    for (const std::array<double, 4>& h : this->Clipping)
-    {
-      const double at0 = h[0] * nearP[0] + h[1] * nearP[1] + h[2] * nearP[2] + h[3];
-      const double rate = h[0] * d[0] + h[1] * d[1] + h[2] * d[2];
-      if (rate > 0.0)
-      {
-        lambdaMin = std::max(lambdaMin, -at0 / rate);
-      }
-      else if (rate < 0.0)
-      {
-        lambdaMax = std::min(lambdaMax, -at0 / rate);
-      }
-      else if (at0 < 0.0)
-      {
-        lambdaMax = -1.0;
-      }
-    }
-    if (!(lambdaMax > 0.0) || !(lambdaMax > lambdaMin))
-    {
-      return false;
-    }
-    // Measure the ray from its point nearest to the mesh centre (the origin here): the vertex
-    // coordinates of the ray frame then stay as small as the mesh.
-    const double lambdaC = std::min(
-      lambdaMax, std::max(0.0, -(nearP[0] * d[0] + nearP[1] * d[1] + nearP[2] * d[2]) / dd));
-    for (int k = 0; k < 3; ++k)
-    {
-      origin[k] = nearP[k] + lambdaC * d[k];
-    }
-    zmin = lambdaMin - lambdaC;
-    zmax = lambdaMax - lambdaC;
-    return true;
-  }
-};
+using PixelRays = vtkTetReferencePixelRays;
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -181,6 +69,16 @@ public:
   vtkMTimeType PropertyMTime = 0;
 
   vtkSMPThreadLocal<std::vector<Hit>> Hits;
+
+  // The scene: added volumes (prepared in Scene) and translucent layers.
+  std::vector<vtkSmartPointer<vtkTetReferenceVolume>> Added;
+  vtkTetReferenceScene Scene;
+  struct LayerInput
+  {
+    vtkSmartPointer<vtkDataArray> RGBA;
+    vtkSmartPointer<vtkFloatArray> Depth;
+  };
+  std::vector<LayerInput> Layers;
 
   // Every pixel's ray cast and composited into `rgba` (float or double, the other null) and
   // `counts` (the tetrahedra each ray crossed).
@@ -433,6 +331,10 @@ int vtkTetReferenceRenderer::Render()
   {
     property = this->Volume->GetProperty();
   }
+  if (!in.Added.empty() || !in.Layers.empty())
+  {
+    return this->RenderScene(property);
+  }
   const float* depth = nullptr;
   if (!this->CheckInputs(property, depth))
   {
@@ -500,12 +402,18 @@ int vtkTetReferenceRenderer::Render()
     this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr,
     counts->GetPointer(0));
 
-  this->Output->SetDimensions(width, height, 1);
-  this->Output->GetPointData()->SetScalars(rgba);
-  this->Output->GetPointData()->AddArray(counts);
+  this->StoreOutput(rgba, counts);
   timer->StopTimer();
   this->LastRayCastTime = timer->GetElapsedTime();
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::StoreOutput(vtkDataArray* rgba, vtkDataArray* counts)
+{
+  this->Output->SetDimensions(this->ImageSize[0], this->ImageSize[1], 1);
+  this->Output->GetPointData()->SetScalars(rgba);
+  this->Output->GetPointData()->AddArray(counts);
 }
 
 //------------------------------------------------------------------------------
@@ -528,6 +436,14 @@ bool vtkTetReferenceRenderer::CheckInputs(vtkVolumeProperty* property, const flo
     vtkErrorMacro("No volume property.");
     return false;
   }
+  return this->CheckView(depth);
+}
+
+//------------------------------------------------------------------------------
+// The camera, the image size and the opaque depth (an error for the first that does not fit);
+// `depth` gets the opaque depth's values, if any.
+bool vtkTetReferenceRenderer::CheckView(const float*& depth)
+{
   if (!this->Camera)
   {
     vtkErrorMacro("No camera.");
@@ -561,41 +477,30 @@ bool vtkTetReferenceRenderer::CheckInputs(vtkVolumeProperty* property, const flo
 bool vtkTetReferenceRenderer::PrepareMesh(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  double matrix[16];
-  vtkMatrix4x4* m = this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix;
-  vtkMatrix4x4::DeepCopy(matrix, m);
-  // The one scalar the property takes from the selected array (the mapper's rule).
-  int cellFlag = -1;
-  vtkDataArray* array = vtkAbstractMapper::GetScalars(
-    this->Input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-  vtkNew<vtkTetScalarSelection> selection;
-  selection->SetVectorMode(this->VectorMode);
-  selection->SetVectorComponent(this->VectorComponent);
-  if (array && !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), property))
-  {
-    vtkErrorMacro("Not rendered: " << selection->GetErrorMessage() << ".");
-    return false;
-  }
-  vtkTetReferenceMesh::ScalarSettings settings;
-  settings.ScalarMode = this->ScalarMode;
-  settings.ArrayAccessMode = this->ArrayAccessMode;
-  settings.ArrayId = this->ArrayId;
-  settings.ArrayName = this->ArrayName ? this->ArrayName : "";
-  settings.ArrayNameSet = this->ArrayName != nullptr;
-  settings.Magnitude = selection->GetMagnitude();
-  settings.Component = selection->GetComponent();
-  if (in.Mesh.IsPreparedFrom(this->Input, settings, matrix))
-  {
-    return true;
-  }
+  vtkTetReferenceScene::Source source;
+  source.Input = this->Input;
+  source.Property = property;
+  vtkMatrix4x4::DeepCopy(
+    source.Matrix, this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix);
+  source.ScalarMode = this->ScalarMode;
+  source.ArrayAccessMode = this->ArrayAccessMode;
+  source.ArrayId = this->ArrayId;
+  source.ArrayName = this->ArrayName;
+  source.VectorMode = this->VectorMode;
+  source.VectorComponent = this->VectorComponent;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   std::string error;
+  bool rebuilt = false;
   vtkIdType degenerate = 0;
-  if (!in.Mesh.Prepare(this->Input, settings, matrix, degenerate, error))
+  if (!vtkTetReferenceScene::PrepareMesh(source, in.Mesh, rebuilt, degenerate, error))
   {
     vtkErrorMacro(<< error);
     return false;
+  }
+  if (!rebuilt)
+  {
+    return true;
   }
   timer->StopTimer();
   this->LastPreparationTime = timer->GetElapsedTime();
@@ -610,19 +515,203 @@ bool vtkTetReferenceRenderer::PrepareMesh(vtkVolumeProperty* property)
 bool vtkTetReferenceRenderer::InitializeIntegrator(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  if (in.Property != property || in.PropertyMTime != property->GetMTime() ||
-    !this->Integrator->IsInitialized())
+  if (!vtkTetReferenceScene::InitializeIntegrator(
+        this->Integrator, property, in.Property, in.PropertyMTime))
   {
-    if (!this->Integrator->Initialize(property))
-    {
-      vtkErrorMacro("The volume property cannot be integrated.");
-      in.Property = nullptr;
-      return false;
-    }
-    in.Property = property;
-    in.PropertyMTime = property->GetMTime();
+    vtkErrorMacro("The volume property cannot be integrated.");
+    return false;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// Render() of a scene (several volumes, translucent layers): the renderer's own input as volume
+// 0 when it has one, then the added volumes, and the layers, all through
+// vtkTetReferenceIntermixing.
+int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
+{
+  vtkInternals& in = *this->Internals;
+  const float* depth = nullptr;
+  if (this->Input && !this->CheckInputs(property, depth))
+  {
+    return 0;
+  }
+  if (!this->Input && !this->CheckView(depth))
+  {
+    return 0;
+  }
+  if (this->BlendMode != 0)
+  {
+    vtkErrorMacro("Blend mode " << this->BlendMode
+                                << " renders one volume without translucent layers; a scene of "
+                                   "several volumes or with layers needs the composite mode.");
+    return 0;
+  }
+  const vtkIdType numPixels = static_cast<vtkIdType>(this->ImageSize[0]) * this->ImageSize[1];
+  vtkTetReferenceIntermixing scene;
+  for (size_t l = 0; l < in.Layers.size(); ++l)
+  {
+    std::string error;
+    if (!vtkTetReferenceScene::CheckLayer(in.Layers[l].RGBA, in.Layers[l].Depth, numPixels, error))
+    {
+      vtkErrorMacro("Translucent layer " << l << ": " << error);
+      return 0;
+    }
+    vtkTetReferenceIntermixing::Layer layer;
+    layer.RGBA.resize(4 * static_cast<size_t>(numPixels));
+    for (vtkIdType p = 0; p < numPixels; ++p)
+    {
+      in.Layers[l].RGBA->GetTuple(p, &layer.RGBA[4 * p]);
+    }
+    layer.Depth = in.Layers[l].Depth->GetPointer(0);
+    scene.Layers.push_back(std::move(layer));
+  }
+  // The volumes: figures summed over them.
+  vtkIdType tetrahedra[3] = { 0, 0, 0 };
+  if (this->Input)
+  {
+    if (!this->PrepareMesh(property) || !this->InitializeIntegrator(property))
+    {
+      return 0;
+    }
+    scene.Media.push_back({ &in.Mesh, this->Integrator });
+    tetrahedra[0] = this->NumberOfTetrahedra;
+    tetrahedra[1] = this->NumberOfDegenerateTetrahedra;
+    tetrahedra[2] = this->NumberOfOverlappingTetrahedra;
+  }
+  std::vector<vtkTetReferenceScene::Source> sources(in.Added.size());
+  for (size_t v = 0; v < in.Added.size(); ++v)
+  {
+    vtkTetReferenceVolume* volume = in.Added[v];
+    vtkTetReferenceScene::Source& source = sources[v];
+    source.Input = volume->GetInput();
+    source.Property = volume->GetPropertyInForce();
+    volume->GetMatrixInForce(source.Matrix);
+    source.ScalarMode = volume->GetScalarMode();
+    source.ArrayAccessMode = volume->GetArrayAccessMode();
+    source.ArrayId = volume->GetArrayId();
+    source.ArrayName = volume->GetArrayName();
+    source.VectorMode = volume->GetVectorMode();
+    source.VectorComponent = volume->GetVectorComponent();
+  }
+  std::string error;
+  if (!in.Scene.Prepare(sources, this->Input ? 1 : 0, tetrahedra, this->LastPreparationTime, error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  in.Scene.AppendMedia(scene.Media);
+  scene.SetReference();
+  this->NumberOfTetrahedra = tetrahedra[0];
+  this->NumberOfDegenerateTetrahedra = tetrahedra[1];
+  this->NumberOfOverlappingTetrahedra = tetrahedra[2];
+
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  PixelRays rays;
+  rays.Width = this->ImageSize[0];
+  rays.Height = this->ImageSize[1];
+  rays.OffsetX = this->SampleOffset[0];
+  rays.OffsetY = this->SampleOffset[1];
+  rays.Depth = depth;
+  vtkMatrix4x4::DeepCopy(rays.Inverse,
+    this->Camera->GetCompositeProjectionTransformMatrix(
+      static_cast<double>(rays.Width) / rays.Height, -1.0, 1.0));
+  vtkMatrix4x4::Invert(rays.Inverse, rays.Inverse);
+  rays.SetClippingPlanes(this->ClippingPlanes); // world coordinates: Center is null
+
+  vtkNew<vtkFloatArray> rgbaFloat;
+  vtkNew<vtkDoubleArray> rgbaDouble;
+  vtkDataArray* rgba = this->DoublePrecisionOutput ? static_cast<vtkDataArray*>(rgbaDouble)
+                                                   : static_cast<vtkDataArray*>(rgbaFloat);
+  rgba->SetName("RGBA");
+  rgba->SetNumberOfComponents(4);
+  rgba->SetNumberOfTuples(numPixels);
+  vtkNew<vtkIntArray> counts;
+  counts->SetName("NumberOfTets");
+  counts->SetNumberOfTuples(numPixels);
+  vtkTetReferenceScene::CastRays(scene, rays,
+    this->DoublePrecisionOutput ? nullptr : rgbaFloat->GetPointer(0),
+    this->DoublePrecisionOutput ? rgbaDouble->GetPointer(0) : nullptr, counts->GetPointer(0));
+  this->StoreOutput(rgba, counts);
+  timer->StopTimer();
+  this->LastRayCastTime = timer->GetElapsedTime();
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTetReferenceVolume* vtkTetReferenceRenderer::AddVolume(
+  vtkDataSet* input, vtkVolumeProperty* property, vtkMatrix4x4* matrix)
+{
+  vtkNew<vtkTetReferenceVolume> volume;
+  volume->SetInputData(input);
+  volume->SetVolumeProperty(property);
+  volume->SetMatrix(matrix);
+  this->AddVolume(volume);
+  return volume;
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::AddVolume(vtkTetReferenceVolume* volume)
+{
+  if (!volume)
+  {
+    vtkErrorMacro("AddVolume: no volume given; nothing added.");
+    return;
+  }
+  this->Internals->Added.emplace_back(volume);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::RemoveAllVolumes()
+{
+  this->Internals->Added.clear();
+  this->Internals->Scene.Clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkTetReferenceRenderer::GetNumberOfAddedVolumes()
+{
+  return static_cast<int>(this->Internals->Added.size());
+}
+
+//------------------------------------------------------------------------------
+vtkTetReferenceVolume* vtkTetReferenceRenderer::GetAddedVolume(int i)
+{
+  if (i < 0 || i >= this->GetNumberOfAddedVolumes())
+  {
+    vtkErrorMacro(
+      "No added volume " << i << " (there are " << this->GetNumberOfAddedVolumes() << ").");
+    return nullptr;
+  }
+  return this->Internals->Added[i];
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::AddTranslucentLayer(vtkDataArray* rgba, vtkFloatArray* depth)
+{
+  if (!rgba || !depth)
+  {
+    vtkErrorMacro("AddTranslucentLayer needs an RGBA array and a depth array; nothing added.");
+    return;
+  }
+  this->Internals->Layers.push_back({ rgba, depth });
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::RemoveAllTranslucentLayers()
+{
+  this->Internals->Layers.clear();
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkTetReferenceRenderer::GetNumberOfTranslucentLayers()
+{
+  return static_cast<int>(this->Internals->Layers.size());
 }
 
 //------------------------------------------------------------------------------
@@ -675,6 +764,12 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleOffset: " << this->SampleOffset[0] << ", " << this->SampleOffset[1]
      << "\n";
   os << indent << "DoublePrecisionOutput: " << this->DoublePrecisionOutput << "\n";
+  os << indent << "NumberOfAddedVolumes: " << this->Internals->Added.size() << "\n";
+  for (const vtkSmartPointer<vtkTetReferenceVolume>& volume : this->Internals->Added)
+  {
+    volume->PrintSelf(os, indent.GetNextIndent());
+  }
+  os << indent << "NumberOfTranslucentLayers: " << this->Internals->Layers.size() << "\n";
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "LastPreparationTime: " << this->LastPreparationTime << "\n";

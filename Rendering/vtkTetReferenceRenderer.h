@@ -53,10 +53,21 @@
  * the image a window would show over a background colour; CompareImages() measures the difference
  * of two RGB images in 1/255 units.
  *
+ * Scenes (docs/reference-renderer.md, "Scenes"): AddVolume() adds more volumes, each with its
+ * own mesh, property, scalars and matrix (vtkTetReferenceVolume), rendered together with the
+ * renderer's own input (when set): along each ray the tetrahedra of all of them are merged in
+ * depth order, and where media overlap the volume rendering integral is that of the sum of
+ * their attenuations with emission sum(tau_i c_i) (vtkTetRayIntegrator::IntegrateMixture;
+ * docs/design.md, "Overlapping media"). AddTranslucentLayer() adds translucent geometry as
+ * layers of one premultiplied RGBA fragment per pixel at a window depth: fragments are
+ * composited in depth order with the volumes (a fragment inside a tetrahedron splits its
+ * segment there) and, like volumes, end at the opaque depth. A render with one volume and no
+ * layer is exactly the single-volume render.
+ *
  * Rays run in parallel with vtkSMPTools; the mesh preparation (triangulation, orientation,
  * hierarchy) is cached until the input, the scalar selection or the volume matrix changes.
  *
- * @sa vtkTetRayIntegrator
+ * @sa vtkTetRayIntegrator vtkTetReferenceVolume
  */
 
 #ifndef vtkTetReferenceRenderer_h
@@ -66,12 +77,14 @@
 #include "vtkRenderingTiledRayCastModule.h" // For export macro
 
 class vtkCamera;
+class vtkDataArray;
 class vtkDataSet;
 class vtkPlaneCollection;
 class vtkFloatArray;
 class vtkImageData;
 class vtkMatrix4x4;
 class vtkTetRayIntegrator;
+class vtkTetReferenceVolume;
 class vtkVolume;
 class vtkVolumeProperty;
 
@@ -215,10 +228,44 @@ public:
   vtkBooleanMacro(DoublePrecisionOutput, vtkTypeBool);
   ///@}
 
+  ///@{
+  /**
+   * More volumes in the scene, rendered with the renderer's own input (when it has one) in one
+   * pass: each is a mesh with its own property, scalar selection and matrix
+   * (vtkTetReferenceVolume). AddVolume(input, property, matrix) makes one (the matrix copied,
+   * nullptr for identity) and returns it, for further settings; AddVolume(volume) adds a given
+   * one (kept by reference: later changes to it are seen at the next Render()). Volumes are
+   * numbered in the order they render their errors: 0 is the renderer's own input when set,
+   * then the added ones. Only the composite blend mode renders several volumes.
+   */
+  vtkTetReferenceVolume* AddVolume(
+    vtkDataSet* input, vtkVolumeProperty* property, vtkMatrix4x4* matrix = nullptr);
+  void AddVolume(vtkTetReferenceVolume* volume);
+  void RemoveAllVolumes();
+  int GetNumberOfAddedVolumes();
+  vtkTetReferenceVolume* GetAddedVolume(int i);
+  ///@}
+
+  ///@{
+  /**
+   * Translucent geometry: a layer holds at most one fragment per pixel, @a rgba (4 components,
+   * premultiplied, alpha in [0, 1]; width x height tuples, row 0 at the bottom) at window depth
+   * @a depth (width x height values in [0, 1], as a depth buffer; 1 means no fragment). Any
+   * number of layers (a depth-peeled surface is one layer per peel); fragments at the same
+   * depth composite in the order their layers were added. Fragments behind the opaque depth
+   * (not strictly in front of it) are hidden; clipping planes do not cut them. The arrays are
+   * kept by reference and checked at Render().
+   */
+  void AddTranslucentLayer(vtkDataArray* rgba, vtkFloatArray* depth);
+  void RemoveAllTranslucentLayers();
+  int GetNumberOfTranslucentLayers();
+  ///@}
+
   /**
    * Render. Returns 1 on success; 0 with an error message on bad input (no input, no
-   * tetrahedra, no scalars, no property, no camera, a bad image size or depth buffer). On
-   * failure the output is an empty image.
+   * tetrahedra, no scalars, no property, no camera, a bad image size or depth buffer; in a
+   * scene, the same of any added volume, a layer of the wrong size or with values out of range,
+   * a blend mode other than composite). On failure the output is an empty image.
    */
   int Render();
 
@@ -228,7 +275,8 @@ public:
   vtkImageData* GetOutput();
 
   /**
-   * The integrator (initialised from the property at each Render() where the property changed).
+   * The integrator of the renderer's own input (initialised from the property at each Render()
+   * where the property changed). Added volumes have integrators of their own.
    */
   vtkTetRayIntegrator* GetIntegrator();
 
@@ -237,7 +285,7 @@ public:
    * Figures of the last Render(): tetrahedra rendered, zero-volume tetrahedra skipped,
    * overlapping tetrahedra left out (on the same side of a shared face as an earlier one: the
    * mesh builder's rule, docs/mesh-layout.md), seconds spent preparing the mesh (0 when cached)
-   * and casting rays.
+   * and casting rays. In a scene, the sums over its volumes.
    */
   vtkGetMacro(NumberOfTetrahedra, vtkIdType);
   vtkGetMacro(NumberOfDegenerateTetrahedra, vtkIdType);
@@ -320,8 +368,12 @@ private:
   // The steps of Render() before the rays are cast (see vtkTetReferenceRenderer.cxx for the
   // private classes that do the work).
   bool CheckInputs(vtkVolumeProperty* property, const float*& depth);
+  bool CheckView(const float*& depth);
   bool PrepareMesh(vtkVolumeProperty* property);
   bool InitializeIntegrator(vtkVolumeProperty* property);
+  // Render() of a scene: several volumes or translucent layers.
+  int RenderScene(vtkVolumeProperty* property);
+  void StoreOutput(vtkDataArray* rgba, vtkDataArray* counts);
 
   class vtkInternals;
   vtkInternals* Internals;

@@ -23,7 +23,8 @@ from vtkmodules.vtkRenderingCore import (
     vtkColorTransferFunction,
     vtkVolumeProperty,
 )
-from tiledraycast import vtkTetRayIntegrator, vtkTetReferenceRenderer
+from vtkmodules.vtkCommonCore import vtkFloatArray
+from tiledraycast import vtkTetRayIntegrator, vtkTetReferenceRenderer, vtkTetReferenceVolume
 
 DATA = None
 
@@ -144,6 +145,69 @@ class TestReferenceRendererPython(unittest.TestCase):
         self.assertGreaterEqual(integrator.GetNumberOfNodes(), 3)
         nodes = [integrator.GetNode(i) for i in range(integrator.GetNumberOfNodes())]
         self.assertEqual(nodes, sorted(nodes))
+
+
+    def test_scene(self):
+        """Two overlapping tetrahedra (AddVolume) and a translucent layer in front of them."""
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
+            points.InsertNextPoint(p)
+        grid = vtkUnstructuredGrid()
+        grid.SetPoints(points)
+        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+        scalars = vtkDoubleArray()
+        for _ in range(4):
+            scalars.InsertNextValue(0.5)
+        grid.GetPointData().SetScalars(scalars)
+        camera = vtkCamera()
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(0.5)
+        camera.SetFocalPoint(0.5, 0.5, 0.0)
+        camera.SetPosition(0.5, 0.5, 5.0)
+        camera.SetViewUp(0, 1, 0)
+        camera.SetClippingRange(1.0, 10.0)
+
+        def prop(tau, rgb):
+            color = vtkColorTransferFunction()
+            color.AddRGBPoint(0.0, *rgb)
+            color.AddRGBPoint(1.0, *rgb)
+            opacity = vtkPiecewiseFunction()
+            opacity.AddPoint(0.0, tau)
+            opacity.AddPoint(1.0, tau)
+            p = vtkVolumeProperty()
+            p.SetColor(color)
+            p.SetScalarOpacity(opacity)
+            return p
+
+        renderer = vtkTetReferenceRenderer()
+        renderer.SetCamera(camera)
+        renderer.SetImageSize(16, 16)
+        renderer.DoublePrecisionOutputOn()
+        first = renderer.AddVolume(grid, prop(1.2, (1.0, 0.0, 0.0)))
+        self.assertIsInstance(first, vtkTetReferenceVolume)
+        second = vtkTetReferenceVolume()
+        second.SetInputData(grid)
+        second.SetVolumeProperty(prop(0.3, (0.0, 0.0, 1.0)))
+        renderer.AddVolume(second)
+        self.assertEqual(renderer.GetNumberOfAddedVolumes(), 2)
+        layer_rgba = vtkDoubleArray()
+        layer_rgba.SetNumberOfComponents(4)
+        layer_depth = vtkFloatArray()
+        for _ in range(16 * 16):
+            layer_rgba.InsertNextTuple4(0.0, 0.25, 0.0, 0.5)
+            layer_depth.InsertNextValue(0.01)  # in front of the tetrahedron
+        renderer.AddTranslucentLayer(layer_rgba, layer_depth)
+        self.assertEqual(renderer.Render(), 1)
+        rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
+        for j in range(16):
+            for i in range(16):
+                x, y = (i + 0.5) / 16, (j + 0.5) / 16
+                chord = max(0.0, 1.0 - x - y)
+                a = -math.expm1(-1.5 * chord)
+                expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
+                for k in range(4):
+                    self.assertAlmostEqual(rgba.GetComponent(i + 16 * j, k), expected[k], delta=1e-12)
 
 
 if __name__ == "__main__":
