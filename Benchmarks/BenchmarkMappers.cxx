@@ -28,6 +28,10 @@
 //     --order O         input (default), morton, morton-cells, morton-points or shuffled: the
 //                       memory order of cells and points (BenchmarkMeshOrder.h); the scene is
 //                       named mesh+O unless input
+//     --rate R          also time ours while "interacting" at R frames per second: the window's
+//                       desired update rate is R during the warm-up and the timed frames
+//                       (AutoAdjustSampleDistances fits the rays to it), and the error is
+//                       measured on the last view then ("compute interactive R/s")
 //     --tf T            ramp (default: the scenes' ramp), band (opacity only in a band 2 % of
 //                       the scalar range wide, at its middle) or spike (0.4 % wide): the scene
 //                       is named mesh+T unless ramp, and ours is also timed without empty-space
@@ -101,6 +105,7 @@ struct Options
   bool Reference = true;
   std::string Order = "input";
   std::string TransferFunction = "ramp";
+  double Rate = 0;
   std::vector<std::string> Meshes;
 };
 
@@ -116,7 +121,7 @@ struct Row
   std::string Pipeline;
   double FirstHitMs = NAN, PeelingMs = NAN, RayCastingMs = NAN, CompositingMs = NAN, Rays = NAN,
          MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN,
-         MapperGpuMs = NAN, MapperCpuMs = NAN;
+         MapperGpuMs = NAN, MapperCpuMs = NAN, SampleDistance = NAN;
 };
 
 const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
@@ -124,7 +129,7 @@ const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms
                      "rmse,p999,max_err,lost_pixels,layers,median_passes_per_tile,"
                      "max_passes_per_tile,pipeline,first_hit_ms,peeling_ms,ray_casting_ms,"
                      "compositing_ms,rays,mean_steps_per_ray,max_steps_per_ray,entries,"
-                     "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms";
+                     "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms,image_sample_distance";
 
 std::string Cell(double v)
 {
@@ -149,7 +154,8 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.FirstHitMs) << "," << Cell(r.PeelingMs) << "," << Cell(r.RayCastingMs) << ","
      << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
      << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
-     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "\n";
+     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance)
+     << "\n";
 }
 
 double Median(std::vector<double> v)
@@ -237,6 +243,7 @@ struct Setting
 {
   std::string Mapper, Name;
   std::function<vtkSmartPointer<vtkAbstractVolumeMapper>(double& prepareMs)> Make;
+  double Rate = 0; // the window's desired update rate while timed (0: VTK's still rate)
 };
 
 std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
@@ -291,6 +298,13 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   if (o.TransferFunction != "ramp")
   {
     ours("compute no-skipping", partial, compact, 0, 256, 0, 4, false);
+  }
+  if (o.Rate > 0)
+  {
+    std::ostringstream name;
+    name << "compute interactive " << o.Rate << "/s";
+    ours(name.str(), partial, compact, 0, 256, 0);
+    settings.back().Rate = o.Rate;
   }
   if (o.OursOnly)
   {
@@ -452,6 +466,8 @@ int main(int argc, char* argv[])
         return EXIT_FAILURE;
       }
     }
+    else if (a == "--rate")
+      o.Rate = std::max(0.0, atof(next().c_str()));
     else if (a == "--tf")
     {
       o.TransferFunction = next();
@@ -578,7 +594,9 @@ int main(int argc, char* argv[])
         timer->StopTimer();
         row.FirstFrameMs = 1000.0 * timer->GetElapsedTime();
 
-        if (!reference.empty())
+        // Interacting: the rate for the warm-up (the sample distance settles) and timed frames.
+        window->SetDesiredUpdateRate(setting.Rate > 0 ? setting.Rate : 0.0001);
+        auto measureError = [&]()
         {
           window->Render();
           const Error e = Compare(ReadPixels(window, size), reference);
@@ -586,6 +604,10 @@ int main(int argc, char* argv[])
           row.P999 = e.P999;
           row.MaxErr = e.Max;
           row.LostPixels = e.Lost;
+        };
+        if (!reference.empty() && setting.Rate <= 0)
+        {
+          measureError();
         }
 
         // Warm-up along the same path until half a second has passed: a GPU left idle while
@@ -605,7 +627,7 @@ int main(int argc, char* argv[])
         }
 
         std::vector<double> wall, gpu;
-        std::vector<double> phases[4], steps, mapperGpu, mapperCpu;
+        std::vector<double> phases[4], steps, mapperGpu, mapperCpu, distances;
         auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
         vtkOpenGLRenderTimer timerObject; // not a vtkObject
         vtkOpenGLRenderTimer* gpuTimer = &timerObject;
@@ -634,9 +656,16 @@ int main(int argc, char* argv[])
             steps.push_back(stats->GetMeanStepsPerRay());
             mapperGpu.push_back(stats->GetTotalGPUTime());
             mapperCpu.push_back(1000.0 * stats->GetRenderTime());
+            distances.push_back(stats->GetImageSampleDistance());
           }
         }
         gpuTimer->ReleaseGraphicsResources();
+        if (!reference.empty() && setting.Rate > 0)
+        {
+          SetView(renderer, grid, 0, o.Frames); // the reference's view, at the interactive rate
+          measureError();
+        }
+        window->SetDesiredUpdateRate(0.0001);
         row.MedianMs = Median(wall);
         row.MinMs = *std::min_element(wall.begin(), wall.end());
         row.GpuMedianMs = Median(gpu);
@@ -656,6 +685,7 @@ int main(int argc, char* argv[])
           row.CompositingMs = Median(phases[3]);
           row.MapperGpuMs = Median(mapperGpu);
           row.MapperCpuMs = Median(mapperCpu);
+          row.SampleDistance = Median(distances);
           row.Rays = static_cast<double>(stats->GetNumberOfRays());
           if (row.Pipeline == "Compute") // the fragment pipeline counts no steps or entries
           {

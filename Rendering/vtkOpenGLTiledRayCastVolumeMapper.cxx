@@ -53,6 +53,7 @@
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
+#include "vtkTiledRayCastSampleDistance.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
 #include "vtkTiledRayCastVisibleMesh.h"
@@ -372,7 +373,11 @@ public:
   // The targets only grow: renderers of different sizes in one window share them, each using
   // the lower-left ImageSize pixels, and nothing is reallocated from one renderer to the next.
   int TargetSize[2] = { 0, 0 };
+  // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
   int ImageSize[2] = { 0, 0 };
+  vtkTiledRayCastSampleDistance SampleDistance;
+  double FrameSampleDistance = 1.0;
+  double TimedSampleDistance = 1.0; // of the frame the timers in flight measure
 
   // Programs.
   Program FirstHitProgram, PeelProgram, NearSliceProgram, TraversalProgram, CopyProgram,
@@ -477,6 +482,8 @@ public:
   bool RenderCompute(vtkOpenGLRenderWindow* window);
   bool RenderFragment(vtkOpenGLRenderWindow* window);
   void SetTargetUniforms(vtkShaderProgram* program, int parity);
+  // Compositing: rays per viewport pixel along x and y (1 at an image sample distance of 1).
+  void SetSampleScaleUniforms(vtkShaderProgram* program) override;
   void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
   void DrawViewport(Program& program);
 
@@ -624,7 +631,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Compute.Composite(frame);
+  this->Compute.Composite(frame, *this);
   this->StopPhase(this->PhaseTimers[PhaseCompositing]);
 
   stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
@@ -1465,8 +1472,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
   }
   else
   {
+    // One depth per ray: at an image sample distance above 1 the nearest of the pixels around
+    // the ray (a depth blit may scale, never filter).
     state->vtkglBlitFramebuffer(this->Viewport[0], this->Viewport[1], this->Viewport[0] + width,
-      this->Viewport[1] + height, 0, 0, width, height, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+      this->Viewport[1] + height, 0, 0, this->ImageSize[0], this->ImageSize[1],
+      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   }
   state->PopDrawFramebufferBinding();
   const GLenum error = glGetError();
@@ -1540,6 +1550,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
   stats->SetCompositingTime(this->PhaseTimers[PhaseCompositing].GetMilliseconds());
   stats->SetTotalGPUTime(this->TotalTimer.GetMilliseconds());
   this->TimersPending = false;
+  // What AutoAdjustSampleDistances fits the next frames to.
+  this->SampleDistance.Measured(this->TimedSampleDistance, 1e-3 * stats->GetTotalGPUTime());
 }
 
 //------------------------------------------------------------------------------
@@ -1702,6 +1714,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtk
   {
     p->SetUniformf("in_tableReferenceLength", static_cast<float>(table->GetReferenceLength()));
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetSampleScaleUniforms(vtkShaderProgram* p)
+{
+  const float scale[2] = { static_cast<float>(this->ImageSize[0]) / this->Viewport[2],
+    static_cast<float>(this->ImageSize[1]) / this->Viewport[3] };
+  p->SetUniform2f("in_sampleScale", scale);
+  p->SetUniform2i("in_imageSize", this->ImageSize);
 }
 
 //------------------------------------------------------------------------------
@@ -2058,6 +2079,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderW
   const float origin[2] = { static_cast<float>(this->Viewport[0]),
     static_cast<float>(this->Viewport[1]) };
   composite->SetUniform2f("in_viewportOrigin", origin);
+  this->SetSampleScaleUniforms(composite);
   this->DrawViewport(this->CompositeProgram);
 
   stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
@@ -2345,8 +2367,16 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return; // the clipping planes leave nothing of the mesh: nothing is visible
   }
+  // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
+  // the volume (vtkTiledRayCastSampleDistance).
+  impl->FrameSampleDistance = impl->SampleDistance.Choose(this->AutoAdjustSampleDistances != 0,
+    this->ImageSampleDistance, this->MinimumImageSampleDistance, this->MaximumImageSampleDistance,
+    vol->GetAllocatedRenderTime());
+  int rays[2];
+  vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, impl->FrameSampleDistance, rays);
   if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
-    !impl->UpdateVisibleMesh(window) || !impl->UpdatePrograms(window) || !impl->UpdateTargets(window, width, height))
+    !impl->UpdateVisibleMesh(window) || !impl->UpdatePrograms(window) ||
+    !impl->UpdateTargets(window, rays[0], rays[1]))
   {
     return;
   }
@@ -2379,6 +2409,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       t.Reset();
     }
+    impl->TimedSampleDistance = impl->FrameSampleDistance;
   }
   impl->StartPhase(impl->TotalTimer);
   // The opaque geometry drawn so far ends the rays.
@@ -2388,7 +2419,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   state->PushFramebufferBindings();
-  state->vtkglViewport(0, 0, width, height);
+  state->vtkglViewport(0, 0, rays[0], rays[1]);
   int cullFaceMode = GL_BACK;
   state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
   impl->ActivateTextures(true);
@@ -2443,6 +2474,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetRendered(true);
   stats->SetImageSize(impl->ImageSize);
+  stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
   const vtkIdType meshBytes = impl->MeshBytes + impl->VisibleMesh.GetBytes();
   stats->SetMeshBytes(meshBytes);

@@ -439,11 +439,13 @@ bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::Composite(const Frame& frame)
+void vtkTiledRayCastComputePipeline::Composite(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
   frame.Window->GetShaderCache()->ReadyShaderProgram(this->CompositeProgram.Shader);
   vtkShaderProgram* p = this->CompositeProgram.Shader;
   p->SetUniformi("in_color", this->Color->GetTextureUnit());
+  setup.SetSampleScaleUniforms(p);
   p->SetUniform2f("in_viewportOrigin", frame.ViewportOrigin);
   const float rectangle[4] = { -1.f, -1.f, 1.f, 1.f };
   p->SetUniform4f("in_rectangle", rectangle);

@@ -69,7 +69,8 @@ class vtkWindow;
 
 /**
  * What a pipeline needs from the mapper to run a program: the uniforms of the frame (rays,
- * opaque depth), of the mesh textures, of the exact-coverage test and of the integration.
+ * opaque depth), of the mesh textures, of the exact-coverage test, of the integration and of
+ * compositing rays over the viewport's pixels.
  */
 class vtkTiledRayCastProgramSetup
 {
@@ -79,6 +80,7 @@ public:
   virtual void SetMeshUniforms(vtkShaderProgram* program) = 0;
   virtual void SetCoverageUniforms(vtkShaderProgram* program) = 0;
   virtual void SetIntegrationUniforms(vtkShaderProgram* program) = 0;
+  virtual void SetSampleScaleUniforms(vtkShaderProgram* program) = 0;
 };
 
 class vtkTiledRayCastComputePipeline
@@ -152,9 +154,10 @@ public:
     vtkTiledRayCastStatistics* stats, std::string& error);
 
   /**
-   * Phase 4, into the caller's framebuffer, viewport and blending (premultiplied colour).
+   * Phase 4, into the caller's framebuffer, viewport and blending (premultiplied colour),
+   * the colour of each ray spread over the viewport's pixels (setup's sample scale).
    */
-  void Composite(const Frame& frame);
+  void Composite(const Frame& frame, vtkTiledRayCastProgramSetup& setup);
 
   /**
    * Wait for this frame's counts and put them in the statistics (SynchronousStatistics).

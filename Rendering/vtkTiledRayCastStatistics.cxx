@@ -89,7 +89,12 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
   // (fragment).
   const bool compute = this->Pipeline && std::string(this->Pipeline) == "Compute";
   text << (this->Pipeline ? this->Pipeline : "?") << " pipeline, " << this->ImageSize[0] << "x"
-       << this->ImageSize[1] << " px, " << this->NumberOfRays << " rays";
+       << this->ImageSize[1] << " px";
+  if (this->ImageSampleDistance != 1.0)
+  {
+    text << " (image sample distance " << this->ImageSampleDistance << ")";
+  }
+  text << ", " << this->NumberOfRays << " rays";
   if (compute)
   {
     text << " (" << this->GetMeanStepsPerRay() << " tets per ray, max " << this->MaximumStepsPerRay
@@ -129,6 +134,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Rendered: " << this->Rendered << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
+  os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";
   os << indent << "NumberOfLayers: " << this->NumberOfLayers << "\n";
   os << indent << "NumberOfPeelPasses: " << this->NumberOfPeelPasses << "\n";

@@ -53,11 +53,14 @@ public:
 
   ///@{
   /**
-   * Image size of the last render (the viewport, in pixels) and the number of pixels whose ray
-   * entered the mesh.
+   * Image size of the last render (of its rays: the viewport in pixels divided by the image
+   * sample distance it used, vtkTiledRayCastVolumeMapper::SetImageSampleDistance), that
+   * distance, and the number of rays that entered the mesh.
    */
   vtkSetVector2Macro(ImageSize, int);
   vtkGetVector2Macro(ImageSize, int);
+  vtkSetMacro(ImageSampleDistance, double);
+  vtkGetMacro(ImageSampleDistance, double);
   vtkSetMacro(NumberOfRays, vtkIdType);
   vtkGetMacro(NumberOfRays, vtkIdType);
   ///@}
@@ -271,6 +274,7 @@ protected:
 
   bool Rendered = false;
   int ImageSize[2] = { 0, 0 };
+  double ImageSampleDistance = 1.0;
   vtkIdType NumberOfRays = 0;
   int NumberOfLayers = 0;
   int NumberOfPeelPasses = 0;

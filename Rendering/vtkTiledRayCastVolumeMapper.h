@@ -243,6 +243,31 @@ public:
 
   ///@{
   /**
+   * Interaction, with the names and meaning of vtkUnstructuredGridVolumeRayCastMapper's
+   * settings. ImageSampleDistance is the distance in pixels between rays: 1 casts one ray per
+   * pixel, 2 one ray per 2 x 2 pixels, whose colours are interpolated bilinearly over the
+   * viewport (values below 1 are taken as 1: no supersampling). With AutoAdjustSampleDistances
+   * on (the default) the distance is chosen every frame between MinimumImageSampleDistance and
+   * MaximumImageSampleDistance (defaults 1 and 10) so that the volume's frame fits the time the
+   * renderer allocated it (vtkProp::GetAllocatedRenderTime, from the render window's desired
+   * update rate): while an interactor moves the camera (desired rate 15/s by default) a frame
+   * that would take longer is drawn with fewer rays, and once the camera stops (still rate
+   * 0.0001/s) every pixel has its ray again. The frame time is the mapper's GPU time, measured
+   * by its timers. GetStatistics()->GetImageSampleDistance() says what the last frame used.
+   */
+  vtkSetClampMacro(ImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(ImageSampleDistance, float);
+  vtkSetClampMacro(MinimumImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(MinimumImageSampleDistance, float);
+  vtkSetClampMacro(MaximumImageSampleDistance, float, 0.1f, 100.0f);
+  vtkGetMacro(MaximumImageSampleDistance, float);
+  vtkSetClampMacro(AutoAdjustSampleDistances, vtkTypeBool, 0, 1);
+  vtkGetMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  vtkBooleanMacro(AutoAdjustSampleDistances, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
    * Empty-space skipping by the transfer function (composite blending only): tetrahedra whose
    * scalars all map to zero opacity are left out of the walk, and rays jump over each run of
    * them to the next face of the visible part of the mesh (the depth peeling of non-convex
@@ -403,6 +428,10 @@ protected:
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
   bool EmptySpaceSkipping = true;
+  float ImageSampleDistance = 1.0f;
+  float MinimumImageSampleDistance = 1.0f;
+  float MaximumImageSampleDistance = 10.0f;
+  vtkTypeBool AutoAdjustSampleDistances = 1;
   double AverageIPScalarRange[2] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MAX };
   int MaximumNumberOfPassesPerLayer = 1000000;
   int VectorMode = DEFAULT;
