@@ -316,6 +316,7 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     ours("compute partial paper", partial, M::PAPER_LAYOUT, 0, 256, 0);
     ours("compute table3d compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
     ours("compute table2d compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
+    ours("compute automatic", M::AUTOMATIC_INTEGRATION, compact, 0, 256, 0);
     ours("fragment partial compact N16 T256", partial, compact, 16, 256, 0);
     ours("fragment partial paper N0 T256", partial, M::PAPER_LAYOUT, 0, 256, 0);
   }

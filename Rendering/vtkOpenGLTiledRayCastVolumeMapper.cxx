@@ -49,6 +49,7 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
+#include "vtkTiledRayCastIntegrationChoice.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
@@ -437,12 +438,25 @@ public:
   void ReportError(const std::string& message);
   // The integration the shaders do: the mapper's setting, or partial pre-integration's node list
   // under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates it).
+  // AUTOMATIC_INTEGRATION is the mode ChooseIntegration() took.
   int IntegrationMode() const
   {
-    return this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND
-      ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION
-      : this->Self->GetIntegrationMode();
+    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+    {
+      return vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
+    }
+    const int mode = this->Self->GetIntegrationMode();
+    return mode == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION ? this->AutomaticMode : mode;
   }
+  // The automatic mode's choice, made again when the transfer function, the mesh, the lengths
+  // or the budget changed.
+  vtkTiledRayCastIntegrationChoice Choice;
+  int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
+  double PredictedError = 0.0;
+  std::vector<double> ChoiceKey;
+  void ChooseIntegration(vtkVolumeProperty* property);
+  // The table of a table mode, at the resolution and lengths it needs (not yet updated).
+  void ConfigureTable(int mode);
   // Draws the volume when `renderer` has finished its frame (EndEvent) instead of now.
   void DeferToEndOfFrame(vtkRenderer* renderer, vtkVolume* volume);
   static void DrawDeferred(vtkObject* renderer, unsigned long, void* mapper, void*);
@@ -1021,9 +1035,19 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   this->TransferFunction->Update(property, this->ScalarRange);
+  if (self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION &&
+    self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    this->ChooseIntegration(property);
+  }
 
   vtkIdType uploaded = 0;
   const int mode = this->IntegrationMode();
+  stats->SetIntegrationMode(mode);
+  stats->SetPredictedError(
+    self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION
+      ? this->PredictedError
+      : -1.0);
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
     if (this->TransferFunction->GetMTime() > this->UploadedNodesTime)
@@ -1065,16 +1089,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
     // A table of the whole transfer function, at the resolution it needs, within the GPU's
     // limits; rebuilt only when the transfer function, the lengths or the mode changed.
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
-    table->SetDimension(mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D ? 3 : 2);
-    table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
-    table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
-    table->SetMaximumSize(mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
-        ? this->Max3DTextureSize
-        : this->MaxTextureSize);
-    // Lengths are in world units: the volume's matrix stretches them by at most its norm.
-    table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
-    table->SetReferenceLength(
-      0.5 * this->TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
+    this->ConfigureTable(mode);
     table->Update(property, this->TransferFunction, this->ScalarRange);
     if (table->GetMTime() > this->UploadedTableTime || mode != this->UploadedTableMode)
     {
@@ -1126,6 +1141,68 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   stats->SetNumberOfTransferFunctionNodes(this->TransferFunction->GetNumberOfNodes());
   stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ConfigureTable(int mode)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastPreIntegrationTable* table = this->Table;
+  const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
+  table->SetDimension(is3D ? 3 : 2);
+  table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
+  table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
+  table->SetMaximumSize(is3D ? this->Max3DTextureSize : this->MaxTextureSize);
+  // Lengths are in world units: the volume's matrix stretches them by at most its norm.
+  table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
+  table->SetReferenceLength(
+    0.5 * this->TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChooseIntegration(
+  vtkVolumeProperty* property)
+{
+  vtkTetMesh* mesh = this->Builder->GetMesh();
+  const double norm = this->Geometry.ObjectToWorldNorm;
+  const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
+    static_cast<double>(mesh->GetMTime()), norm, this->Self->GetMaximumError(),
+    static_cast<double>(this->Self->GetPreIntegrationTableScalarSize()),
+    static_cast<double>(this->Self->GetPreIntegrationTableLengthSize()) };
+  if (key == this->ChoiceKey)
+  {
+    return;
+  }
+  this->ChoiceKey = key;
+  // Cheapest first (measured on the H200: the 2D table, the 3D table, partial pre-integration);
+  // each table is kept if its predicted error is within the budget.
+  this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
+  this->PredictedError = 0.0;
+  this->Choice.SampleSegments(mesh, norm);
+  if (!this->Choice.SetProperty(property))
+  {
+    return;
+  }
+  for (int mode :
+    { vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D })
+  {
+    this->ConfigureTable(mode);
+    if (!this->Table->Update(property, this->TransferFunction, this->ScalarRange))
+    {
+      return;
+    }
+    const double error = this->Choice.PredictError(this->Table);
+    vtkDebugWithObjectMacro(this->Self, << "Automatic integration: "
+                                        << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(mode)
+                                        << " predicted " << error << "/255 (worst segment "
+                                        << this->Choice.GetWorstSegmentError() << ")");
+    if (error <= this->Self->GetMaximumError())
+    {
+      this->AutomaticMode = mode;
+      this->PredictedError = error;
+      return;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

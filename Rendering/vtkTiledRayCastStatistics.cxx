@@ -167,6 +167,8 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TransferFunctionBytes: " << this->TransferFunctionBytes << "\n";
   os << indent << "RenderTargetBytes: " << this->RenderTargetBytes << "\n";
   os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes << "\n";
+  os << indent << "IntegrationMode: " << this->IntegrationMode << "\n";
+  os << indent << "PredictedError: " << this->PredictedError << "\n";
   os << indent << "PreIntegrationTableSize: " << this->PreIntegrationTableSize[0] << " "
      << this->PreIntegrationTableSize[1] << " " << this->PreIntegrationTableSize[2] << "\n";
   os << indent << "NumberOfVisibleTetrahedra: " << this->NumberOfVisibleTetrahedra << "\n";

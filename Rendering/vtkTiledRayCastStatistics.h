@@ -241,6 +241,18 @@ public:
 
   ///@{
   /**
+   * The integration mode the last frame used (vtkTiledRayCastVolumeMapper::IntegrationModes:
+   * the automatic mode's choice), and the automatic mode's predicted error of that choice in
+   * 1/255 (0 for partial pre-integration; -1 when the mode was not automatic).
+   */
+  vtkSetMacro(IntegrationMode, int);
+  vtkGetMacro(IntegrationMode, int);
+  vtkSetMacro(PredictedError, double);
+  vtkGetMacro(PredictedError, double);
+  ///@}
+
+  ///@{
+  /**
    * Empty-space skipping (vtkTiledRayCastVolumeMapper::SetEmptySpaceSkipping): the tetrahedra
    * the transfer function leaves visible (all of them when nothing is skipped), and the faces
    * rays enter the mesh by (its boundary faces, or those of its visible part).
@@ -307,6 +319,8 @@ protected:
   vtkIdType RenderTargetBytes = 0;
   double MeshBytesPerTetrahedron = 0;
   int NumberOfTransferFunctionNodes = 0;
+  int IntegrationMode = 0;
+  double PredictedError = -1.0;
   vtkIdType NumberOfVisibleTetrahedra = 0;
   vtkIdType NumberOfEntryFaces = 0;
   int PreIntegrationTableSize[3] = { 0, 0, 0 };

@@ -73,12 +73,20 @@ double* vtkTiledRayCastVolumeMapper::GetBounds()
 //------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString()
 {
-  switch (this->IntegrationMode)
+  return vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(this->IntegrationMode);
+}
+
+//------------------------------------------------------------------------------
+const char* vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(int mode)
+{
+  switch (mode)
   {
     case PRE_INTEGRATION_3D:
       return "PreIntegration3D";
     case PRE_INTEGRATION_2D:
       return "PreIntegration2D";
+    case AUTOMATIC_INTEGRATION:
+      return "Automatic";
     default:
       return "PartialPreIntegration";
   }
@@ -125,6 +133,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "IntegrationMode: " << this->GetIntegrationModeAsString() << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "MeshLayout: " << this->GetMeshLayoutAsString() << "\n";
   os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
   os << indent << "Pipeline: " << this->GetPipelineAsString() << "\n";

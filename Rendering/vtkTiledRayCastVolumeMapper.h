@@ -94,14 +94,21 @@ public:
      * A 2D table of (entry scalar, exit scalar) for one reference length; other lengths are
      * corrected in opacity. The cheapest table, the least accurate.
      */
-    PRE_INTEGRATION_2D = 2
+    PRE_INTEGRATION_2D = 2,
+    /**
+     * The cheapest of the three whose predicted error stays within MaximumError: the 2D table,
+     * else the 3D table, else partial pre-integration. The error is predicted from the mesh's
+     * segments and the transfer function when either changes (docs/mapper.md, "Automatic
+     * integration"); GetStatistics()->GetIntegrationMode() says which mode was taken.
+     */
+    AUTOMATIC_INTEGRATION = 3
   };
 
   ///@{
   /**
    * The integration mode (see IntegrationModes). Default PARTIAL_PRE_INTEGRATION.
    */
-  vtkSetClampMacro(IntegrationMode, int, PARTIAL_PRE_INTEGRATION, PRE_INTEGRATION_2D);
+  vtkSetClampMacro(IntegrationMode, int, PARTIAL_PRE_INTEGRATION, AUTOMATIC_INTEGRATION);
   vtkGetMacro(IntegrationMode, int);
   void SetIntegrationModeToPartialPreIntegration()
   {
@@ -109,7 +116,19 @@ public:
   }
   void SetIntegrationModeToPreIntegration3D() { this->SetIntegrationMode(PRE_INTEGRATION_3D); }
   void SetIntegrationModeToPreIntegration2D() { this->SetIntegrationMode(PRE_INTEGRATION_2D); }
+  void SetIntegrationModeToAutomatic() { this->SetIntegrationMode(AUTOMATIC_INTEGRATION); }
   const char* GetIntegrationModeAsString();
+  static const char* GetIntegrationModeAsString(int mode);
+  ///@}
+
+  ///@{
+  /**
+   * The error budget of AUTOMATIC_INTEGRATION: the largest difference, in 1/255 of a colour
+   * channel, that a table may add to a pixel against the exact integral (before the
+   * framebuffer's own rounding to 8 bits). Default 1.
+   */
+  vtkSetClampMacro(MaximumError, double, 0.0, 255.0);
+  vtkGetMacro(MaximumError, double);
   ///@}
 
   /**
@@ -428,6 +447,7 @@ protected:
   int TileSize = 256;
   double EarlyRayTerminationOpacity = 0.999;
   bool EmptySpaceSkipping = true;
+  double MaximumError = 1.0;
   float ImageSampleDistance = 1.0f;
   float MinimumImageSampleDistance = 1.0f;
   float MaximumImageSampleDistance = 10.0f;

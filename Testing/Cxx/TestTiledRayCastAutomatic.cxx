@@ -1,0 +1,115 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastAutomatic.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// The automatic integration mode (vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION with
+// MaximumError): the cheapest integration whose predicted error fits the budget. Bluntfin under
+// the scenes' smooth ramp takes the 2D table; five huge tets, where the 2D table is 11/255 off,
+// and a 2 %-wide opacity band, where both tables are 4/255 off at grazing rays, take partial
+// pre-integration; a budget of 255 takes the 2D table anywhere; a new transfer function is
+// decided again; a blend mode other than compositing uses partial pre-integration's nodes as
+// always. Every image is checked against the exact reference with the default bounds.
+#include "TiledRayCastTestScene.h"
+
+#include "vtkPiecewiseFunction.h"
+#include "vtkTesting.h"
+#include "vtkTiledRayCastStatistics.h"
+#include "vtkTimerLog.h"
+
+#include <string>
+
+namespace
+{
+using trctest::Expect;
+using M = vtkTiledRayCastVolumeMapper;
+
+bool Check(trctest::WatchedVolume& scene, int expectedMode, const std::string& label)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  scene.Window->Render();
+  timer->StopTimer();
+  vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
+  std::cout << label << ": " << M::GetIntegrationModeAsString(stats->GetIntegrationMode())
+            << ", predicted error " << stats->GetPredictedError() << "/255, frame with the choice "
+            << timer->GetElapsedTime() << " s\n";
+  bool ok = Expect(stats->GetIntegrationMode() == expectedMode,
+    label + ": " + M::GetIntegrationModeAsString(expectedMode) + " is taken");
+  ok = Expect(stats->GetPredictedError() <= scene.Mapper->GetMaximumError(),
+         label + ": the prediction fits the budget") &&
+    ok;
+  return trctest::CheckAgainstReference(
+           scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), label.c_str()) &&
+    ok;
+}
+
+void View(trctest::WatchedVolume& scene)
+{
+  scene.Renderer->GetActiveCamera()->Azimuth(30);
+  scene.Renderer->GetActiveCamera()->Elevation(20);
+  scene.Renderer->ResetCameraClippingRange();
+}
+}
+
+int TestTiledRayCastAutomatic(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> fin = trctest::ReadMesh(argc, argv, "bluntfin_tets.vtu");
+  vtkSmartPointer<vtkUnstructuredGrid> box = trctest::ReadMesh(argc, argv, "box5_tets.vtu");
+  if (!fin || !box)
+  {
+    return EXIT_FAILURE;
+  }
+  {
+    vtkNew<vtkRenderWindow> window;
+    window->SetSize(8, 8);
+    window->Render();
+    vtkNew<M> mapper;
+    vtkNew<vtkVolumeProperty> property;
+    if (!mapper->IsRenderSupported(window, property))
+    {
+      return VTK_SKIP_RETURN_CODE;
+    }
+  }
+  bool ok = true;
+  {
+    trctest::WatchedVolume scene(fin, trctest::MakePropertyFor(fin, 0.05), 160);
+    scene.Mapper->SetIntegrationModeToAutomatic();
+    scene.Mapper->SynchronousStatisticsOn();
+    View(scene);
+    ok = Check(scene, M::PRE_INTEGRATION_2D, "bluntfin, ramp") && ok;
+    // A narrow band: both tables are refused.
+    double range[2];
+    fin->GetPointData()->GetScalars()->GetRange(range);
+    scene.Volume->SetProperty(
+      trcscene::MakeBandProperty(range, 0.49, 0.02, 0.05 * fin->GetLength()));
+    ok = Check(scene, M::PARTIAL_PRE_INTEGRATION, "bluntfin, band") && ok;
+    // Any error allowed: the cheapest table.
+    scene.Mapper->SetMaximumError(255);
+    scene.Window->Render();
+    ok = Expect(scene.Mapper->GetStatistics()->GetIntegrationMode() == M::PRE_INTEGRATION_2D,
+           "a budget of 255 takes the 2D table") &&
+      ok;
+    scene.Mapper->SetMaximumError(1);
+    // Blend modes evaluate partial pre-integration's nodes, automatic or not.
+    scene.Mapper->SetBlendModeToMaximumIntensity();
+    scene.Window->Render();
+    ok = Expect(scene.Mapper->GetStatistics()->GetIntegrationMode() == M::PARTIAL_PRE_INTEGRATION,
+           "maximum intensity: partial pre-integration's nodes") &&
+      ok;
+    ok = Expect(scene.Warnings->Count == 0, "no warning") && ok;
+  }
+  {
+    trctest::WatchedVolume scene(box, trctest::MakePropertyFor(box, 0.05), 160);
+    scene.Mapper->SetIntegrationModeToAutomatic();
+    scene.Mapper->SynchronousStatisticsOn();
+    View(scene);
+    ok = Check(scene, M::PARTIAL_PRE_INTEGRATION, "five huge tets, ramp") && ok;
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
