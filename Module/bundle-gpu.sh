@@ -119,7 +119,9 @@ if [ "$with_python" = 1 ]; then
       libvtk*-9.1.so*) wanted+=" $(echo "$lib" | sed -E 's/^lib(vtk[A-Za-z0-9]+)-9\.1\.so.*/\1/')" ;;
     esac
   done
-  wanted+=" $({ cat "$here"/Testing/Python/*.py "$here"/Examples/Python/*.py 2>/dev/null || true; } |
+  # (each module's tests are in its folder's Testing/Python; the package's in Testing/Python)
+  wanted+=" $({ cat "$here"/Testing/Python/*.py "$here"/*/Testing/Python/*.py \
+    "$here"/Examples/Python/*.py 2>/dev/null || true; } |
     { grep -oE 'vtkmodules\.vtk[A-Za-z0-9]+' || true; } | sed 's/^vtkmodules\.//' | sort -u | tr '\n' ' ')"
   wanted+=" vtkCommonCore vtkRenderingCore vtkRenderingOpenGL2 vtkTestingRendering"
   wanted+=" ${TRC_BUNDLE_PY_MODULES:-}"

@@ -134,7 +134,7 @@ mkdir -p "$root/build/Testing/Temporary"
 say "bundle of commit $TRC_GIT_COMMIT, made $TRC_CREATED"
 say "the EGL window on this machine:"
 "$root/build/bin/TiledRayCastHeadlessCxxTests" TestHeadlessEGLWindow \
-  -T "$root/build/Testing/Temporary" -V "$repo/Testing/Data/Baseline/TestHeadlessEGLWindow.png" 2>&1 |
+  -T "$root/build/Testing/Temporary" -V "$repo/Headless/Testing/Data/Baseline/TestHeadlessEGLWindow.png" 2>&1 |
   grep -E '^(EGL|OpenGL (vendor|renderer|version)|[0-9]+: |Mesa surfaceless)|rror' | grep -v Dart |
   sort -u | sed 's/^/  /' || true
 

@@ -109,6 +109,31 @@ vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
 
 namespace
 {
+// The one check of the context's OpenGL version, for IsSupported() and CheckContext(): the
+// version line of the fragment pipeline's programs (their //TRC::Version tag), or null where the
+// context cannot run them. They need explicit output locations (several render targets, written
+// by name): GLSL 3.30, or 1.50 with GL_ARB_explicit_attrib_location. The programs bring this line
+// themselves rather than VTK's //VTK::System::Dec, because VTK 9.1's vtkOpenGLShaderCache
+// replaces that tag with "#version 150" whatever the context (no explicit locations), and the
+// compute pipeline compiles the same fragment shaders as GLSL 4.30 (storage buffers and image
+// atomics); for the same reason their outputs are declared here, not by //VTK::Output::Dec,
+// which only declares what gl_FragData[n] writes.
+const char* FragmentPipelineVersion(vtkOpenGLRenderWindow* window)
+{
+  int major = 0, minor = 0;
+  window->GetOpenGLVersion(major, minor);
+  if (major > 3 || (major == 3 && minor >= 3))
+  {
+    return "#version 330 core\n";
+  }
+  if (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location)
+  {
+    return "#version 150\n"
+           "#extension GL_ARB_explicit_attrib_location : require\n";
+  }
+  return nullptr;
+}
+
 // Ray status codes, as in vtkTiledRayCastCommonFS.glsl.
 enum RayStatus
 {
@@ -773,20 +798,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
   }
   this->CheckedWindow = window;
   this->ContextUsable = false;
-  int major = 0, minor = 0;
-  window->GetOpenGLVersion(major, minor);
-  if (major > 3 || (major == 3 && minor >= 3))
+  const char* version = FragmentPipelineVersion(window);
+  if (!version)
   {
-    this->VersionHeader = "#version 330 core\n";
-  }
-  else if (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location)
-  {
-    // GLSL 1.50 with explicit output locations (several render targets).
-    this->VersionHeader = "#version 150\n"
-                          "#extension GL_ARB_explicit_attrib_location : require\n";
-  }
-  else
-  {
+    int major = 0, minor = 0;
+    window->GetOpenGLVersion(major, minor);
     std::ostringstream msg;
     msg << "The OpenGL context (version " << major << "." << minor
         << ") lacks what tiled ray casting needs: OpenGL 3.3, or 3.2 with "
@@ -794,6 +810,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
     this->ContextError = msg.str();
     return false;
   }
+  this->VersionHeader = version;
   window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_SIZE, &this->MaxTextureSize);
   window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &this->MaxTextureBufferSize);
   window->GetState()->vtkglGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &this->Max3DTextureSize);
@@ -2299,14 +2316,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::ReleaseGraphicsResources(vtkWindow* wind
 bool vtkOpenGLTiledRayCastVolumeMapper::IsSupported(vtkRenderWindow* window)
 {
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  if (!gl)
-  {
-    return false;
-  }
-  int major = 0, minor = 0;
-  gl->GetOpenGLVersion(major, minor);
-  return major > 3 || (major == 3 && minor >= 3) ||
-    (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location);
+  return gl && FragmentPipelineVersion(gl) != nullptr;
 }
 
 //------------------------------------------------------------------------------

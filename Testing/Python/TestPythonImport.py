@@ -1,4 +1,5 @@
-"""The 'tiledraycast' package imports next to vtkmodules and its classes work from Python."""
+"""The 'tiledraycast' package imports next to vtkmodules, every wrapped class of its modules is
+there, and its classes work from Python."""
 import sys
 import unittest
 
@@ -7,7 +8,18 @@ import tiledraycast
 from tiledraycast import vtkTetMeshValidationReport
 
 
+def expected_classes():
+    """The classes after --classes (ctest passes the modules' public classes), else none."""
+    if "--classes" in sys.argv:
+        return [c for c in sys.argv[sys.argv.index("--classes") + 1].split(",") if c]
+    return []
+
+
 class TestPythonImport(unittest.TestCase):
+    def test_every_class(self):
+        missing = [c for c in expected_classes() if not hasattr(tiledraycast, c)]
+        self.assertEqual(missing, [], "classes that `import tiledraycast` lacks")
+
     def test_report(self):
         report = vtkTetMeshValidationReport()
         self.assertTrue(report.GetUsable())
@@ -18,10 +30,17 @@ class TestPythonImport(unittest.TestCase):
         self.assertFalse(report.GetUsable())
         self.assertEqual(report.GetErrorMessage(), "no 3D cells")
 
+    def test_mapper_factory(self):
+        # The abstract mapper's New() returns the OpenGL implementation: the wrapped module of
+        # TiledRayCast::RenderingTiledRayCast registers its object factory when it is imported.
+        mapper = tiledraycast.vtkTiledRayCastVolumeMapper()
+        self.assertIsNotNone(mapper)
+        self.assertEqual(mapper.GetClassName(), "vtkOpenGLTiledRayCastVolumeMapper")
+
     def test_version(self):
         self.assertRegex(tiledraycast.__version__, r"^\d+\.\d+\.\d+$")
 
 
 if __name__ == "__main__":
-    # ctest passes -D <data> -T <temporary>; unittest must not see them.
+    # ctest passes -D <data> -T <temporary> --classes <list>; unittest must not see them.
     unittest.main(argv=[sys.argv[0]])

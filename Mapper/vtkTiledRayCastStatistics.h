@@ -1,0 +1,334 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastStatistics.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastStatistics
+ * @brief   what vtkTiledRayCastVolumeMapper did in its last render
+ *
+ * Filled by the mapper at every Render() and readable from C++ and Python through
+ * vtkTiledRayCastVolumeMapper::GetStatistics(). The counts describe the last frame; GPU times
+ * are the last ones available (this frame's when the mapper's SynchronousStatistics is on, an
+ * earlier frame's otherwise, read without stalling the GPU); GPU memory is what the mapper holds
+ * now.
+ */
+
+#ifndef vtkTiledRayCastStatistics_h
+#define vtkTiledRayCastStatistics_h
+
+#include "vtkObject.h"
+#include "vtkTiledRayCastMapperModule.h" // For export macro
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class VTKTILEDRAYCASTMAPPER_EXPORT vtkTiledRayCastStatistics : public vtkObject
+{
+public:
+  static vtkTiledRayCastStatistics* New();
+  vtkTypeMacro(vtkTiledRayCastStatistics, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * Zero every per-frame count (GPU times and memory are kept).
+   */
+  void ResetFrameCounts();
+
+  ///@{
+  /**
+   * Whether the last frame drew anything. False when the input could not be rendered (see
+   * the mapper's validation report and the error it printed), when nothing was visible, and
+   * when the mapper had no input at all (vtkVolume then never calls its Render(): the mapper's
+   * Update(), which vtkVolume calls every frame, resets the counts).
+   */
+  vtkSetMacro(Rendered, bool);
+  vtkGetMacro(Rendered, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Image size of the last render (of its rays: the viewport in pixels divided by the image
+   * sample distance it used, vtkTiledRayCastVolumeMapper::SetImageSampleDistance), that
+   * distance, and the number of rays that entered the mesh.
+   */
+  vtkSetVector2Macro(ImageSize, int);
+  vtkGetVector2Macro(ImageSize, int);
+  vtkSetMacro(ImageSampleDistance, double);
+  vtkGetMacro(ImageSampleDistance, double);
+  vtkSetMacro(NumberOfRays, vtkIdType);
+  vtkGetMacro(NumberOfRays, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Boundary layers: the first hit counts as layer 1; every depth-peeling pass that found at
+   * least one re-entry adds one. NumberOfPeelPasses also counts the last, empty peel that ended
+   * peeling. NumberOfNearPlaneRays is the number of rays that started inside the mesh at the
+   * near plane (camera inside the mesh).
+   */
+  vtkSetMacro(NumberOfLayers, int);
+  vtkGetMacro(NumberOfLayers, int);
+  vtkSetMacro(NumberOfPeelPasses, int);
+  vtkGetMacro(NumberOfPeelPasses, int);
+  vtkSetMacro(NumberOfNearPlaneRays, vtkIdType);
+  vtkGetMacro(NumberOfNearPlaneRays, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Tiles: how many the viewport was cut into, and how many never ran a ray-casting pass
+   * because none of their rays needed one (no mesh under them, or all rays done).
+   */
+  vtkSetMacro(NumberOfTiles, int);
+  vtkGetMacro(NumberOfTiles, int);
+  vtkSetMacro(NumberOfTilesSkipped, int);
+  vtkGetMacro(NumberOfTilesSkipped, int);
+  ///@}
+
+  ///@{
+  /**
+   * Ray-casting passes: the total over all tiles and layers, and per tile that ran at least
+   * one (summed over layers) the minimum, median and maximum. Z-update and occlusion-query
+   * passes are counted separately.
+   */
+  vtkSetMacro(NumberOfRayCastPasses, vtkIdType);
+  vtkGetMacro(NumberOfRayCastPasses, vtkIdType);
+  vtkSetMacro(MinimumPassesPerTile, int);
+  vtkGetMacro(MinimumPassesPerTile, int);
+  vtkSetMacro(MedianPassesPerTile, double);
+  vtkGetMacro(MedianPassesPerTile, double);
+  vtkSetMacro(MaximumPassesPerTile, int);
+  vtkGetMacro(MaximumPassesPerTile, int);
+  vtkSetMacro(NumberOfZUpdatePasses, vtkIdType);
+  vtkGetMacro(NumberOfZUpdatePasses, vtkIdType);
+  vtkSetMacro(NumberOfOcclusionQueries, vtkIdType);
+  vtkGetMacro(NumberOfOcclusionQueries, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Which pipeline rendered: "Compute" or "Fragment" (see vtkTiledRayCastVolumeMapper's
+   * Pipeline setting).
+   */
+  vtkSetStringMacro(Pipeline);
+  vtkGetStringMacro(Pipeline);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: the boundary-face crossings listed per pixel (entries; one per ray and
+   * boundary layer in front of the opaque depth). In the compute pipeline this count, those
+   * below and the
+   * numbers of rays, layers and early terminations come from the GPU: they are this frame's
+   * when SynchronousStatistics is on, else those of the latest frame whose counts had arrived.
+   */
+  vtkSetMacro(NumberOfEntries, vtkIdType);
+  vtkGetMacro(NumberOfEntries, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: rays whose entry list lost entries, so that they missed boundary layers.
+   * The list is sized from earlier frames (Render() never waits for this frame's count); a
+   * frame it did not hold is drawn again at once when the frame is verified
+   * (SynchronousStatistics, the first frame of a mesh or image size, a camera jump), so this is
+   * 0 then; on other frames the mapper warns and the list grows for the next frame.
+   */
+  vtkSetMacro(NumberOfIncompleteRays, vtkIdType);
+  vtkGetMacro(NumberOfIncompleteRays, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * Compute pipeline: the tetrahedra the rays walked: in all, per ray on average and the most
+   * of any ray.
+   */
+  vtkSetMacro(NumberOfSteps, vtkIdType);
+  vtkGetMacro(NumberOfSteps, vtkIdType);
+  vtkSetMacro(MaximumStepsPerRay, vtkIdType);
+  vtkGetMacro(MaximumStepsPerRay, vtkIdType);
+  double GetMeanStepsPerRay() const
+  {
+    return this->NumberOfRays > 0 ? static_cast<double>(this->NumberOfSteps) / this->NumberOfRays
+                                  : 0.0;
+  }
+  ///@}
+
+  ///@{
+  /**
+   * Rays that stopped because their opacity reached the mapper's early-ray-termination
+   * threshold.
+   */
+  vtkSetMacro(NumberOfRaysTerminatedEarly, vtkIdType);
+  vtkGetMacro(NumberOfRaysTerminatedEarly, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * GPU time of each phase in milliseconds (vtkOpenGLRenderTimer), and of the whole render:
+   * first hit (with the near-plane pass), depth peeling, ray casting (with Z-update and query
+   * passes), compositing. -1 until a measurement is available.
+   */
+  vtkSetMacro(FirstHitTime, double);
+  vtkGetMacro(FirstHitTime, double);
+  vtkSetMacro(PeelingTime, double);
+  vtkGetMacro(PeelingTime, double);
+  vtkSetMacro(RayCastingTime, double);
+  vtkGetMacro(RayCastingTime, double);
+  vtkSetMacro(CompositingTime, double);
+  vtkGetMacro(CompositingTime, double);
+  vtkSetMacro(TotalGPUTime, double);
+  vtkGetMacro(TotalGPUTime, double);
+  ///@}
+
+  ///@{
+  /**
+   * CPU work of the last render, in seconds: rebuilding the mesh layout (0 when nothing
+   * changed) and the transfer-function tables, and the whole Render() call.
+   */
+  vtkSetMacro(MeshBuildTime, double);
+  vtkGetMacro(MeshBuildTime, double);
+  vtkSetMacro(TransferFunctionBuildTime, double);
+  vtkGetMacro(TransferFunctionBuildTime, double);
+  vtkSetMacro(RenderTime, double);
+  vtkGetMacro(RenderTime, double);
+  ///@}
+
+  ///@{
+  /**
+   * Bytes uploaded to the GPU during the last render (0 when only the camera moved).
+   */
+  vtkSetMacro(UploadedBytes, vtkIdType);
+  vtkGetMacro(UploadedBytes, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * GPU memory the mapper holds, in bytes: the mesh (layout textures and boundary faces),
+   * the transfer-function textures, the per-pixel render targets, and their sum. Also the
+   * mesh's bytes per tetrahedron.
+   */
+  vtkSetMacro(MeshBytes, vtkIdType);
+  vtkGetMacro(MeshBytes, vtkIdType);
+  vtkSetMacro(TransferFunctionBytes, vtkIdType);
+  vtkGetMacro(TransferFunctionBytes, vtkIdType);
+  vtkSetMacro(RenderTargetBytes, vtkIdType);
+  vtkGetMacro(RenderTargetBytes, vtkIdType);
+  vtkIdType GetTotalGPUBytes() const
+  {
+    return this->MeshBytes + this->TransferFunctionBytes + this->RenderTargetBytes;
+  }
+  vtkSetMacro(MeshBytesPerTetrahedron, double);
+  vtkGetMacro(MeshBytesPerTetrahedron, double);
+  ///@}
+
+  ///@{
+  /**
+   * The tables in use: the number of piecewise-linear transfer-function nodes the shader
+   * splits segments at, and the pre-integration table resolution (0 when no table is used).
+   */
+  vtkSetMacro(NumberOfTransferFunctionNodes, int);
+  vtkGetMacro(NumberOfTransferFunctionNodes, int);
+  vtkSetVector3Macro(PreIntegrationTableSize, int);
+  vtkGetVector3Macro(PreIntegrationTableSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * The integration mode the last frame used (vtkTiledRayCastVolumeMapper::IntegrationModes:
+   * the automatic mode's choice), and the automatic mode's predicted error of that choice in
+   * 1/255 (0 for partial pre-integration; -1 when the mode was not automatic).
+   */
+  vtkSetMacro(IntegrationMode, int);
+  vtkGetMacro(IntegrationMode, int);
+  vtkSetMacro(PredictedError, double);
+  vtkGetMacro(PredictedError, double);
+  ///@}
+
+  ///@{
+  /**
+   * Empty-space skipping (vtkTiledRayCastVolumeMapper::SetEmptySpaceSkipping): the tetrahedra
+   * the transfer function leaves visible (all of them when nothing is skipped), and the faces
+   * rays enter the mesh by (its boundary faces, or those of its visible part).
+   */
+  vtkSetMacro(NumberOfVisibleTetrahedra, vtkIdType);
+  vtkGetMacro(NumberOfVisibleTetrahedra, vtkIdType);
+  vtkSetMacro(NumberOfEntryFaces, vtkIdType);
+  vtkGetMacro(NumberOfEntryFaces, vtkIdType);
+  ///@}
+
+#ifndef __VTK_WRAP__
+  /**
+   * Per-tile pass counts of the last render (tiles that ran no pass are left out); the mapper
+   * fills this and the min/median/max above are computed from it by FinishTilePasses().
+   */
+  std::vector<int>& GetPassesPerTile()
+  {
+    return this->PassesPerTile;
+  }
+#endif
+  void FinishTilePasses();
+
+  /**
+   * The statistics as one line of text, for logs and examples.
+   */
+  std::string GetSummary() const;
+
+protected:
+  vtkTiledRayCastStatistics();
+  ~vtkTiledRayCastStatistics() override;
+
+  bool Rendered = false;
+  int ImageSize[2] = { 0, 0 };
+  double ImageSampleDistance = 1.0;
+  vtkIdType NumberOfRays = 0;
+  int NumberOfLayers = 0;
+  int NumberOfPeelPasses = 0;
+  vtkIdType NumberOfNearPlaneRays = 0;
+  int NumberOfTiles = 0;
+  int NumberOfTilesSkipped = 0;
+  vtkIdType NumberOfRayCastPasses = 0;
+  int MinimumPassesPerTile = 0;
+  double MedianPassesPerTile = 0;
+  int MaximumPassesPerTile = 0;
+  vtkIdType NumberOfZUpdatePasses = 0;
+  vtkIdType NumberOfOcclusionQueries = 0;
+  vtkIdType NumberOfRaysTerminatedEarly = 0;
+  char* Pipeline = nullptr;
+  vtkIdType NumberOfEntries = 0;
+  vtkIdType NumberOfIncompleteRays = 0;
+  vtkIdType NumberOfSteps = 0;
+  vtkIdType MaximumStepsPerRay = 0;
+  double FirstHitTime = -1;
+  double PeelingTime = -1;
+  double RayCastingTime = -1;
+  double CompositingTime = -1;
+  double TotalGPUTime = -1;
+  double MeshBuildTime = 0;
+  double TransferFunctionBuildTime = 0;
+  double RenderTime = 0;
+  vtkIdType UploadedBytes = 0;
+  vtkIdType MeshBytes = 0;
+  vtkIdType TransferFunctionBytes = 0;
+  vtkIdType RenderTargetBytes = 0;
+  double MeshBytesPerTetrahedron = 0;
+  int NumberOfTransferFunctionNodes = 0;
+  int IntegrationMode = 0;
+  double PredictedError = -1.0;
+  vtkIdType NumberOfVisibleTetrahedra = 0;
+  vtkIdType NumberOfEntryFaces = 0;
+  int PreIntegrationTableSize[3] = { 0, 0, 0 };
+  std::vector<int> PassesPerTile;
+
+private:
+  vtkTiledRayCastStatistics(const vtkTiledRayCastStatistics&) = delete;
+  void operator=(const vtkTiledRayCastStatistics&) = delete;
+};
+
+#endif

@@ -1,0 +1,219 @@
+"""The exact reference renderer and its integrator, used from Debian's /usr/bin/python3.
+
+Renders a small image of spx_vistrails.vtu and checks it against what must hold (coverage,
+alpha in [0, 1), premultiplied colours not above alpha, tetrahedra counted), a single
+tetrahedron of constant scalar against its closed form, and the integrator's closed form for
+constant attenuation.
+"""
+import math
+import os
+import sys
+import unittest
+
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import (
+    VTK_TETRA,
+    vtkImageData,
+    vtkPiecewiseFunction,
+    vtkUnstructuredGrid,
+)
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
+from vtkmodules.vtkRenderingCore import (
+    vtkCamera,
+    vtkColorTransferFunction,
+    vtkVolumeProperty,
+)
+from vtkmodules.vtkCommonCore import vtkFloatArray
+from tiledraycast import vtkTetRayIntegrator, vtkTetReferenceRenderer, vtkTetReferenceVolume
+
+DATA = None
+
+
+def make_property(lo, hi, unit):
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(lo, 0.1, 0.2, 1.0)
+    color.AddRGBPoint(0.5 * (lo + hi), 0.2, 1.0, 0.3)
+    color.AddRGBPoint(hi, 1.0, 0.3, 0.1)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.05)
+    opacity.AddPoint(hi, 0.9)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit)
+    return prop
+
+
+class TestReferenceRendererPython(unittest.TestCase):
+    def test_dataset(self):
+        reader = vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
+        reader.Update()
+        grid = reader.GetOutput()
+        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        b = grid.GetBounds()
+        diag = math.sqrt((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2)
+        center = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
+        camera = vtkCamera()
+        camera.SetFocalPoint(center)
+        camera.SetPosition(center[0] + 0.8 * diag, center[1] + 0.4 * diag, center[2] + 1.1 * diag)
+        camera.SetViewUp(0, 1, 0)
+        camera.SetClippingRange(0.1 * diag, 5 * diag)
+
+        renderer = vtkTetReferenceRenderer()
+        renderer.SetInputData(grid)
+        renderer.SetVolumeProperty(make_property(lo, hi, diag / 15))
+        renderer.SetCamera(camera)
+        renderer.SetImageSize(64, 48)
+        self.assertEqual(renderer.Render(), 1)
+        self.assertEqual(renderer.GetNumberOfTetrahedra(), grid.GetNumberOfCells())
+
+        image = renderer.GetOutput()
+        self.assertEqual(image.GetDimensions(), (64, 48, 1))
+        rgba = image.GetPointData().GetArray("RGBA")
+        counts = image.GetPointData().GetArray("NumberOfTets")
+        covered = 0
+        for p in range(64 * 48):
+            r, g, bl, a = rgba.GetTuple4(p)
+            self.assertTrue(0.0 <= a < 1.0)
+            for c in (r, g, bl):
+                # Colours of the transfer function are <= 1: premultiplied values <= alpha.
+                self.assertTrue(-1e-12 <= c <= a + 1e-6)
+            n = counts.GetValue(p)
+            self.assertEqual(n > 0, a > 0)
+            covered += a > 0
+        self.assertGreater(covered, 200)
+
+        rgb8 = vtkImageData()
+        vtkTetReferenceRenderer.ConvertToUnsignedChar(image, (0.0, 0.0, 0.0), rgb8)
+        stats = [0.0, 0.0, 0.0]
+        self.assertEqual(vtkTetReferenceRenderer.CompareImages(image, rgb8, stats), 1)
+        self.assertLessEqual(stats[2], 0.5 + 1e-3)  # rounding to 8 bits only
+
+    def test_single_tetrahedron(self):
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
+            points.InsertNextPoint(p)
+        grid = vtkUnstructuredGrid()
+        grid.SetPoints(points)
+        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+        scalars = vtkDoubleArray()
+        for _ in range(4):
+            scalars.InsertNextValue(0.5)
+        grid.GetPointData().SetScalars(scalars)
+        # Looking down -z with a parallel projection: the chord at (x, y) is 1 - x - y.
+        camera = vtkCamera()
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(0.5)
+        camera.SetFocalPoint(0.5, 0.5, 0.0)
+        camera.SetPosition(0.5, 0.5, 5.0)
+        camera.SetViewUp(0, 1, 0)
+        camera.SetClippingRange(1.0, 10.0)
+        tau = 1.7
+        prop = make_property(0.0, 1.0, 1.0)
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(0.0, tau)
+        opacity.AddPoint(1.0, tau)
+        prop.SetScalarOpacity(opacity)
+        renderer = vtkTetReferenceRenderer()
+        renderer.SetInputData(grid)
+        renderer.SetVolumeProperty(prop)
+        renderer.SetCamera(camera)
+        renderer.SetImageSize(16, 16)
+        renderer.DoublePrecisionOutputOn()
+        self.assertEqual(renderer.Render(), 1)
+        rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
+        for j in range(16):
+            for i in range(16):
+                x, y = (i + 0.5) / 16, (j + 0.5) / 16
+                chord = max(0.0, 1.0 - x - y)
+                alpha = rgba.GetComponent(i + 16 * j, 3)
+                self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
+
+    def test_integrator(self):
+        prop = make_property(0.0, 1.0, 2.0)
+        opacity = vtkPiecewiseFunction()
+        opacity.AddPoint(0.0, 0.8)
+        opacity.AddPoint(1.0, 0.8)
+        prop.SetScalarOpacity(opacity)
+        integrator = vtkTetRayIntegrator()
+        self.assertEqual(integrator.Initialize(prop), 1)
+        rgba = [0.0, 0.0, 0.0, 0.0]
+        integrator.Integrate(0.2, 0.7, 1.5, rgba)
+        self.assertAlmostEqual(rgba[3], -math.expm1(-0.4 * 1.5), delta=1e-14)
+        self.assertGreaterEqual(integrator.GetNumberOfNodes(), 3)
+        nodes = [integrator.GetNode(i) for i in range(integrator.GetNumberOfNodes())]
+        self.assertEqual(nodes, sorted(nodes))
+
+
+    def test_scene(self):
+        """Two overlapping tetrahedra (AddVolume) and a translucent layer in front of them."""
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
+            points.InsertNextPoint(p)
+        grid = vtkUnstructuredGrid()
+        grid.SetPoints(points)
+        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+        scalars = vtkDoubleArray()
+        for _ in range(4):
+            scalars.InsertNextValue(0.5)
+        grid.GetPointData().SetScalars(scalars)
+        camera = vtkCamera()
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(0.5)
+        camera.SetFocalPoint(0.5, 0.5, 0.0)
+        camera.SetPosition(0.5, 0.5, 5.0)
+        camera.SetViewUp(0, 1, 0)
+        camera.SetClippingRange(1.0, 10.0)
+
+        def prop(tau, rgb):
+            color = vtkColorTransferFunction()
+            color.AddRGBPoint(0.0, *rgb)
+            color.AddRGBPoint(1.0, *rgb)
+            opacity = vtkPiecewiseFunction()
+            opacity.AddPoint(0.0, tau)
+            opacity.AddPoint(1.0, tau)
+            p = vtkVolumeProperty()
+            p.SetColor(color)
+            p.SetScalarOpacity(opacity)
+            return p
+
+        renderer = vtkTetReferenceRenderer()
+        renderer.SetCamera(camera)
+        renderer.SetImageSize(16, 16)
+        renderer.DoublePrecisionOutputOn()
+        first = renderer.AddVolume(grid, prop(1.2, (1.0, 0.0, 0.0)))
+        self.assertIsInstance(first, vtkTetReferenceVolume)
+        second = vtkTetReferenceVolume()
+        second.SetInputData(grid)
+        second.SetVolumeProperty(prop(0.3, (0.0, 0.0, 1.0)))
+        renderer.AddVolume(second)
+        self.assertEqual(renderer.GetNumberOfAddedVolumes(), 2)
+        layer_rgba = vtkDoubleArray()
+        layer_rgba.SetNumberOfComponents(4)
+        layer_depth = vtkFloatArray()
+        for _ in range(16 * 16):
+            layer_rgba.InsertNextTuple4(0.0, 0.25, 0.0, 0.5)
+            layer_depth.InsertNextValue(0.01)  # in front of the tetrahedron
+        renderer.AddTranslucentLayer(layer_rgba, layer_depth)
+        self.assertEqual(renderer.Render(), 1)
+        rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
+        for j in range(16):
+            for i in range(16):
+                x, y = (i + 0.5) / 16, (j + 0.5) / 16
+                chord = max(0.0, 1.0 - x - y)
+                a = -math.expm1(-1.5 * chord)
+                expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
+                for k in range(4):
+                    self.assertAlmostEqual(rgba.GetComponent(i + 16 * j, k), expected[k], delta=1e-12)
+
+
+if __name__ == "__main__":
+    # ctest passes -D <data> -T <temporary>; unittest must not see them.
+    if "-D" in sys.argv:
+        DATA = sys.argv[sys.argv.index("-D") + 1]
+    else:
+        DATA = os.path.join(os.path.dirname(__file__), "..", "..", "..", "Testing", "Data")
+    unittest.main(argv=[sys.argv[0]])
