@@ -27,14 +27,14 @@
 #define vtkTetReferenceVolume_h
 
 #include "vtkObject.h"
-#include "vtkRenderingTiledRayCastModule.h" // For export macro
+#include "vtkTiledRayCastReferenceModule.h" // For export macro
 
 class vtkDataSet;
 class vtkMatrix4x4;
 class vtkVolume;
 class vtkVolumeProperty;
 
-class VTKRENDERINGTILEDRAYCAST_EXPORT vtkTetReferenceVolume : public vtkObject
+class VTKTILEDRAYCASTREFERENCE_EXPORT vtkTetReferenceVolume : public vtkObject
 {
 public:
   static vtkTetReferenceVolume* New();
