@@ -49,6 +49,7 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
+#include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
@@ -81,6 +82,7 @@
 #include "vtkTiledRayCastPreIntegration2D.h"
 #include "vtkTiledRayCastPreIntegration3D.h"
 #include "vtkTiledRayCastQuadVS.h"
+#include "vtkTiledRayCastShading.h"
 #include "vtkTiledRayCastTraversalFS.h"
 #include "vtkTiledRayCastWalk.h"
 
@@ -410,13 +412,16 @@ public:
   unsigned long DeferredObserver = 0;
   bool DeferredPending = false;
   bool DrawingDeferred = false;
-  bool WarnedShading = false;
+  bool WarnedPositionalLights = false;
+  bool WarnedIgnoredLights = false;
+  bool WarnedShadedCellScalars = false;
   bool WarnedGradientOpacity = false;
   bool WarnedStoppedRays = false;
   std::string LastError;
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
+  vtkTiledRayCastLighting Lighting;
   std::vector<Tile> Tiles;
   // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
   // them when that count was zero.
@@ -445,8 +450,10 @@ public:
   // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
   // then marks the volume with itself as a render pass.
   static bool InsideVolumetricPeeling(vtkVolume* volume);
-  // Once each: the property asks for shading or gradient opacity, which are not drawn.
+  // Once: the property asks for gradient opacity, which is not drawn.
   void WarnUnsupportedProperty(vtkVolumeProperty* property);
+  // Once each: what shading does not do as asked (this frame's Lighting).
+  void WarnLighting();
   bool CheckContext(vtkOpenGLRenderWindow* window);
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
@@ -467,6 +474,7 @@ public:
   void SetCoverageUniforms(vtkShaderProgram* program) override;
   void SetIntegrationUniforms(vtkShaderProgram* program) override;
   void SetBlendUniforms(vtkShaderProgram* program);
+  void SetShadingUniforms(vtkShaderProgram* program);
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
@@ -717,12 +725,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnUnsupportedProperty(
   vtkVolumeProperty* property)
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  if (property->GetShade(0) && !this->WarnedShading)
-  {
-    vtkWarningWithObjectMacro(self, "Shading (vtkVolumeProperty::ShadeOn) is not supported by "
-                                    "this mapper yet: the volume is drawn unshaded.");
-    this->WarnedShading = true;
-  }
   // A gradient opacity function that is 1 everywhere changes nothing (ParaView sets one).
   bool gradientOpacity = false;
   if (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0))
@@ -740,6 +742,33 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnUnsupportedProperty(
     vtkWarningWithObjectMacro(self, "Gradient opacity is not supported by this mapper: the "
                                     "volume's opacity depends on the scalar alone.");
     this->WarnedGradientOpacity = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
+{
+  const vtkTiledRayCastLighting& lighting = this->Lighting;
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  if (lighting.NumberOfPositionalLights > 0 && !this->WarnedPositionalLights)
+  {
+    vtkWarningWithObjectMacro(self, "Shading lights every light as a directional one: a "
+                                    "positional light shines from its position towards its focal "
+                                    "point, without attenuation or cone.");
+    this->WarnedPositionalLights = true;
+  }
+  if (lighting.NumberOfIgnoredLights > 0 && !this->WarnedIgnoredLights)
+  {
+    vtkWarningWithObjectMacro(self, "Shading uses the first "
+        << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
+        << lighting.NumberOfIgnoredLights << " more are ignored.");
+    this->WarnedIgnoredLights = true;
+  }
+  if (lighting.Enabled && this->HasCellScalars && !this->WarnedShadedCellScalars)
+  {
+    vtkWarningWithObjectMacro(self, "Shading cell scalars: they are constant per cell, their "
+                                    "gradient is zero, so only the ambient term lights them.");
+    this->WarnedShadedCellScalars = true;
   }
 }
 
@@ -1178,6 +1207,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
     vtkShaderProgram::Substitute(
       integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
     integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
+  }
+  else if (this->Lighting.Enabled)
+  {
+    // Shaded walks only where the property shades: the unshaded walk stays as it is.
+    integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
   }
   std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
@@ -1663,6 +1697,26 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShaderProgram* p)
+{
+  const vtkTiledRayCastLighting& lighting = this->Lighting;
+  if (!lighting.Enabled)
+  {
+    return;
+  }
+  p->SetUniform4f("in_material", lighting.Material);
+  p->SetUniformi("in_twoSidedLighting", lighting.TwoSided);
+  p->SetUniformMatrix3x3("in_gradientToWorld", const_cast<float*>(lighting.GradientToWorld));
+  p->SetUniformi("in_numberOfLights", lighting.NumberOfLights);
+  if (lighting.NumberOfLights > 0)
+  {
+    p->SetUniform3fv("in_lightToLight", lighting.NumberOfLights, lighting.ToLight);
+    p->SetUniform3fv("in_lightDiffuse", lighting.NumberOfLights, lighting.Diffuse);
+    p->SetUniform3fv("in_lightSpecular", lighting.NumberOfLights, lighting.Specular);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->IntegrationMode();
@@ -1676,8 +1730,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtk
     {
       this->SetBlendUniforms(p);
     }
+    this->SetShadingUniforms(p);
     return;
   }
+  this->SetShadingUniforms(p);
   vtkTiledRayCastPreIntegrationTable* table = this->Table;
   int size[3];
   table->GetSize(size);
@@ -2333,6 +2389,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return;
   }
+  impl->Lighting.Compute(ren, vol, this->BlendMode);
+  impl->WarnLighting();
   if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
     !impl->WarnedClippingPlanes)
   {
