@@ -49,6 +49,7 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
+#include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
@@ -73,6 +74,7 @@
 #include "vtkTiledRayCastCompositeFS.h"
 #include "vtkTiledRayCastCopyFS.h"
 #include "vtkTiledRayCastCountFS.h"
+#include "vtkTiledRayCastGradientOpacity.h"
 #include "vtkTiledRayCastNearSliceFS.h"
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
@@ -422,6 +424,7 @@ public:
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
   vtkTiledRayCastLighting Lighting;
+  vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   std::vector<Tile> Tiles;
   // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
   // them when that count was zero.
@@ -450,9 +453,8 @@ public:
   // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
   // then marks the volume with itself as a render pass.
   static bool InsideVolumetricPeeling(vtkVolume* volume);
-  // Once: the property asks for gradient opacity, which is not drawn.
-  void WarnUnsupportedProperty(vtkVolumeProperty* property);
-  // Once each: what shading does not do as asked (this frame's Lighting).
+  // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
+  // GradientOpacity).
   void WarnLighting();
   bool CheckContext(vtkOpenGLRenderWindow* window);
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
@@ -721,31 +723,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::InsideVolumetricPeeling(vt
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnUnsupportedProperty(
-  vtkVolumeProperty* property)
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  // A gradient opacity function that is 1 everywhere changes nothing (ParaView sets one).
-  bool gradientOpacity = false;
-  if (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0))
-  {
-    vtkPiecewiseFunction* f = property->GetStoredGradientOpacity(0);
-    for (int i = 0; f && i < f->GetSize() && !gradientOpacity; ++i)
-    {
-      double node[4];
-      f->GetNodeValue(i, node);
-      gradientOpacity = node[1] != 1.0;
-    }
-  }
-  if (gradientOpacity && !this->WarnedGradientOpacity)
-  {
-    vtkWarningWithObjectMacro(self, "Gradient opacity is not supported by this mapper: the "
-                                    "volume's opacity depends on the scalar alone.");
-    this->WarnedGradientOpacity = true;
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
 {
   const vtkTiledRayCastLighting& lighting = this->Lighting;
@@ -763,6 +740,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
         << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
         << lighting.NumberOfIgnoredLights << " more are ignored.");
     this->WarnedIgnoredLights = true;
+  }
+  if (this->GradientOpacity.Approximated && !this->WarnedGradientOpacity)
+  {
+    vtkWarningWithObjectMacro(self,
+      "The gradient opacity function has intervals of another midpoint or sharpness than 0.5 and "
+      "0, or more than "
+        << vtkTiledRayCastGradientOpacityNodes::MaximumNodes
+        << " nodes: it is sampled (linear between samples).");
+    this->WarnedGradientOpacity = true;
   }
   if (lighting.Enabled && this->HasCellScalars && !this->WarnedShadedCellScalars)
   {
@@ -1208,10 +1194,19 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
       integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
     integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
   }
-  else if (this->Lighting.Enabled)
+  else
   {
-    // Shaded walks only where the property shades: the unshaded walk stays as it is.
-    integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
+    // Shaded walks, or walks with gradient opacity, only where the property asks: the walk
+    // without them stays as it is.
+    if (this->Lighting.Enabled)
+    {
+      integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
+    }
+    if (this->GradientOpacity.Enabled)
+    {
+      integrationCode =
+        "#define TRC_GRADIENT_OPACITY\n" + integrationCode + vtkTiledRayCastGradientOpacity;
+    }
   }
   std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
@@ -1700,13 +1695,23 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShaderProgram* p)
 {
   const vtkTiledRayCastLighting& lighting = this->Lighting;
+  const vtkTiledRayCastGradientOpacityNodes& gradientOpacity = this->GradientOpacity;
+  if (lighting.Enabled || gradientOpacity.Enabled)
+  {
+    p->SetUniformMatrix3x3("in_gradientToWorld", const_cast<float*>(lighting.GradientToWorld));
+  }
+  if (gradientOpacity.Enabled)
+  {
+    p->SetUniformi("in_gradientOpacityNodes", gradientOpacity.NumberOfNodes);
+    p->SetUniform2fv("in_gradientOpacity", gradientOpacity.NumberOfNodes, gradientOpacity.Nodes[0]);
+    p->SetUniformi("in_gradientOpacityClamping", gradientOpacity.Clamping);
+  }
   if (!lighting.Enabled)
   {
     return;
   }
   p->SetUniform4f("in_material", lighting.Material);
   p->SetUniformi("in_twoSidedLighting", lighting.TwoSided);
-  p->SetUniformMatrix3x3("in_gradientToWorld", const_cast<float*>(lighting.GradientToWorld));
   p->SetUniformi("in_numberOfLights", lighting.NumberOfLights);
   if (lighting.NumberOfLights > 0)
   {
@@ -2368,7 +2373,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The volume has no property. Nothing is drawn.");
     return;
   }
-  impl->WarnUnsupportedProperty(property);
 
   int width = 0, height = 0;
   ren->GetTiledSizeAndOrigin(&width, &height, &impl->Viewport[0], &impl->Viewport[1]);
@@ -2390,6 +2394,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   impl->Lighting.Compute(ren, vol, this->BlendMode);
+  impl->GradientOpacity.Compute(property, this->BlendMode);
   impl->WarnLighting();
   if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
     !impl->WarnedClippingPlanes)

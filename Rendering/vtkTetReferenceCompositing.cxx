@@ -36,6 +36,7 @@ void vtkTetReferenceCompositing::CompositeRay(
   double rgba[4], const vtkTetReferenceShading* shading, const double d[3])
 {
   const bool shaded = shading && shading->GetEnabled() && d;
+  const bool gradientOpacity = shading && shading->GetGradientOpacityEnabled();
   double color[3] = { 0.0, 0.0, 0.0 };
   double opticalDepth = 0.0;
   for (const vtkTetReferenceRayCaster::Hit& hit : hits)
@@ -45,8 +46,10 @@ void vtkTetReferenceCompositing::CompositeRay(
       continue;
     }
     double segment[4], segmentDepth;
+    // Gradient opacity scales the attenuation, constant over the segment: its length.
+    const double scale = gradientOpacity ? shading->OpacityScale(hit.Tet) : 1.0;
     integrator->IntegrateWithDepth(
-      hit.S0, hit.S1, (hit.Z1 - hit.Z0) * unitLength, segment, &segmentDepth);
+      hit.S0, hit.S1, (hit.Z1 - hit.Z0) * unitLength * scale, segment, &segmentDepth);
     if (shaded)
     {
       shading->Apply(hit.Tet, d, -std::expm1(-segmentDepth), segment);

@@ -37,7 +37,8 @@ public:
    * Front-to-back compositing of `hits` (sorted; those of `transparent` tetrahedra skipped) into
    * premultiplied RGBA; `unitLength` is the length of a unit of the ray parameter. Stops once
    * what lies behind can change no value. With `shading` (enabled), each segment's colour is
-   * shaded for its tetrahedron seen along the ray's direction `d`.
+   * shaded for its tetrahedron seen along the ray's direction `d`, and its attenuation scaled by
+   * the tetrahedron's gradient opacity.
    */
   static void CompositeRay(const std::vector<vtkTetReferenceRayCaster::Hit>& hits,
     const std::vector<unsigned char>& transparent, vtkTetRayIntegrator* integrator,

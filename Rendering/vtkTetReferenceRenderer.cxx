@@ -355,7 +355,7 @@ int vtkTetReferenceRenderer::Render()
   {
     return 0;
   }
-  // Shading applies to compositing only, as in VTK's volume mappers.
+  // Shading and gradient opacity apply to compositing only, as in VTK's volume mappers.
   in.Shading.Initialize(this->BlendMode == 0 ? property : nullptr, this->Lights, this->Camera,
     this->TwoSidedLighting != 0, &in.Mesh);
 
@@ -565,12 +565,12 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
   {
     vtkVolumeProperty* p = v == 0 ? (this->Input ? property : nullptr)
                                   : in.Added[v - 1]->GetPropertyInForce();
-    if (p && p->GetShade(0))
+    if (vtkTetReferenceShading::DependsOnGradient(p))
     {
       // The mixture of overlapping media would need each medium's shaded emission apart.
       vtkErrorMacro("Volume " << (this->Input ? v : v - 1)
-                              << " is shaded (vtkVolumeProperty::ShadeOn): shading renders one "
-                                 "volume without translucent layers, not a scene.");
+                              << " is shaded or has a gradient opacity: these render one volume "
+                                 "without translucent layers, not a scene.");
       return 0;
     }
   }

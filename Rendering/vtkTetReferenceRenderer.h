@@ -165,8 +165,10 @@ public:
    * renderer's (vtkRenderer::GetLights(); kept by reference), and whether lighting is two-sided
    * (vtkRenderer::GetTwoSidedLighting(), default on). Every light is directional; headlights
    * follow the camera and camera lights are placed by it, as the renderer places them. No
-   * lights: a shaded volume gets the ambient term alone. Shading applies to the composite blend
-   * mode of one volume; a scene (AddVolume(), AddTranslucentLayer()) refuses a shaded property.
+   * lights: a shaded volume gets the ambient term alone. Shading and gradient opacity (the
+   * property's, scaling each tetrahedron's attenuation by its gradient's magnitude in scalar
+   * units per world unit) apply to the composite blend mode of one volume; a scene
+   * (AddVolume(), AddTranslucentLayer()) refuses a property with either.
    */
   void SetLights(vtkLightCollection* lights);
   vtkGetObjectMacro(Lights, vtkLightCollection);

@@ -15,9 +15,11 @@
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkTetReferenceMesh.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -41,6 +43,10 @@ void vtkTetReferenceShading::Initialize(vtkVolumeProperty* property, vtkLightCol
 {
   this->Lights.clear();
   this->Mesh = mesh;
+  this->GradientOpacity =
+    property && mesh && property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0)
+    ? property->GetStoredGradientOpacity(0)
+    : nullptr;
   this->Enabled = property && property->GetShade(0) && camera && mesh;
   if (!this->Enabled)
   {
@@ -97,6 +103,27 @@ void vtkTetReferenceShading::Initialize(vtkVolumeProperty* property, vtkLightCol
     }
     this->Lights.push_back(l);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetReferenceShading::DependsOnGradient(vtkVolumeProperty* property)
+{
+  return property &&
+    (property->GetShade(0) ||
+      (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0)));
+}
+
+//------------------------------------------------------------------------------
+double vtkTetReferenceShading::OpacityScale(vtkIdType tet) const
+{
+  if (!this->GradientOpacity)
+  {
+    return 1.0;
+  }
+  double gradient[3];
+  Gradient(*this->Mesh, tet, gradient);
+  const double value = this->GradientOpacity->GetValue(vtkMath::Norm(gradient));
+  return std::min(std::max(value, 0.0), 1.0);
 }
 
 //------------------------------------------------------------------------------

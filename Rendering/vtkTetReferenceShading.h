@@ -10,7 +10,7 @@
 =========================================================================*/
 /**
  * @class   vtkTetReferenceShading
- * @brief   the reference renderer's shading (vtkVolumeProperty::ShadeOn), in double (private)
+ * @brief   the reference renderer's shading and gradient opacity, in double (private)
  *
  * The model of docs/design.md ("Shading"), computed here without the mapper's code: the colour
  * c(s) of a tetrahedron seen along a ray becomes
@@ -29,6 +29,13 @@
  * c' = scale c + offset along the whole segment a ray makes in a tetrahedron, so its emission
  * c' tau integrates to scale C + offset alpha (C, alpha: the unshaded segment's premultiplied
  * colour and opacity): Apply().
+ *
+ * Gradient opacity (docs/design.md, "Gradient opacity"): the property's gradient opacity
+ * function of component 0 (when set and not disabled), evaluated by vtkPiecewiseFunction at the
+ * magnitude of the tetrahedron's world gradient and clamped to [0, 1], scales its attenuation;
+ * as for shading, the gradient is constant over a segment, and an attenuation scaled by k over a
+ * length L integrates as the attenuation itself over k L: OpacityScale() scales the length.
+ * Both apply to the composite blend mode only.
  */
 
 #ifndef vtkTetReferenceShading_h
@@ -40,6 +47,7 @@
 
 class vtkCamera;
 class vtkLightCollection;
+class vtkPiecewiseFunction;
 class vtkTetReferenceMesh;
 class vtkVolumeProperty;
 
@@ -47,14 +55,26 @@ class vtkTetReferenceShading
 {
 public:
   /**
-   * Set up from the property (shading off when its Shade(0) is off), the lights (none: the
-   * ambient term alone), the camera and the two-sided flag, for tetrahedra of `mesh` (world
-   * coordinates). The mesh is kept by reference.
+   * Set up from the property (shading off when its Shade(0) is off; its gradient opacity), the
+   * lights (none: the ambient term alone), the camera and the two-sided flag, for tetrahedra of
+   * `mesh` (world coordinates). The mesh and the property's function are kept by reference.
    */
   void Initialize(vtkVolumeProperty* property, vtkLightCollection* lights, vtkCamera* camera,
     bool twoSided, const vtkTetReferenceMesh* mesh);
 
   bool GetEnabled() const { return this->Enabled; }
+  bool GetGradientOpacityEnabled() const { return this->GradientOpacity != nullptr; }
+
+  /**
+   * Whether the property shades (component 0) or has a gradient opacity that is not disabled:
+   * what a scene refuses.
+   */
+  static bool DependsOnGradient(vtkVolumeProperty* property);
+
+  /**
+   * The factor of tetrahedron `tet`'s attenuation (1 without gradient opacity).
+   */
+  double OpacityScale(vtkIdType tet) const;
 
   /**
    * The gradient of tetrahedron `tet`'s linear scalar field in world coordinates (zero for cell
@@ -88,6 +108,7 @@ private:
   double SpecularPower = 1.0;
   std::vector<Light> Lights;
   const vtkTetReferenceMesh* Mesh = nullptr;
+  vtkPiecewiseFunction* GradientOpacity = nullptr;
 };
 
 #endif

@@ -26,19 +26,6 @@ void vtkTiledRayCastLighting::Compute(vtkRenderer* renderer, vtkVolume* volume, 
   this->NumberOfLights = 0;
   this->NumberOfPositionalLights = 0;
   this->NumberOfIgnoredLights = 0;
-  vtkVolumeProperty* property = volume->GetProperty();
-  this->Enabled =
-    property && property->GetShade(0) && blendMode == vtkVolumeMapper::COMPOSITE_BLEND;
-  if (!this->Enabled)
-  {
-    return;
-  }
-  this->Material[0] = static_cast<float>(property->GetAmbient(0));
-  this->Material[1] = static_cast<float>(property->GetDiffuse(0));
-  this->Material[2] = static_cast<float>(property->GetSpecular(0));
-  this->Material[3] = static_cast<float>(property->GetSpecularPower(0));
-  this->TwoSided = renderer->GetTwoSidedLighting() ? 1 : 0;
-
   // Gradients are covectors: an object-space gradient g is M^-T g in world coordinates, M the
   // linear part of the volume's matrix (the layout's shift, a translation, changes nothing).
   double linear[3][3];
@@ -60,6 +47,19 @@ void vtkTiledRayCastLighting::Compute(vtkRenderer* renderer, vtkVolume* volume, 
       this->GradientToWorld[3 * c + r] = static_cast<float>(inverse[c][r]);
     }
   }
+
+  vtkVolumeProperty* property = volume->GetProperty();
+  this->Enabled =
+    property && property->GetShade(0) && blendMode == vtkVolumeMapper::COMPOSITE_BLEND;
+  if (!this->Enabled)
+  {
+    return;
+  }
+  this->Material[0] = static_cast<float>(property->GetAmbient(0));
+  this->Material[1] = static_cast<float>(property->GetDiffuse(0));
+  this->Material[2] = static_cast<float>(property->GetSpecular(0));
+  this->Material[3] = static_cast<float>(property->GetSpecularPower(0));
+  this->TwoSided = renderer->GetTwoSidedLighting() ? 1 : 0;
 
   // The renderer has placed its headlights and camera lights for this frame's camera
   // (vtkRenderer::UpdateLightsGeometryToFollowCamera): their transformed positions are in world

@@ -37,7 +37,8 @@ public:
   /**
    * Fills every member for this renderer's lights and camera, this volume's property and
    * matrix, and the mapper's blend mode: Enabled when the property shades component 0 under
-   * composite blending (VTK's volume mappers shade nothing else).
+   * composite blending (VTK's volume mappers shade nothing else). GradientToWorld is filled
+   * whether or not (gradient opacity needs it too).
    */
   void Compute(vtkRenderer* renderer, vtkVolume* volume, int blendMode);
 

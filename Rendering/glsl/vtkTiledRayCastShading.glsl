@@ -24,7 +24,11 @@ uniform vec3 in_lightDiffuse[TRC_MAXIMUM_LIGHTS];
 uniform vec3 in_lightSpecular[TRC_MAXIMUM_LIGHTS];
 uniform vec4 in_material; // ambient, diffuse, specular, specular power
 uniform int in_twoSidedLighting;
+#ifndef TRC_GRADIENT_TO_WORLD
+#define TRC_GRADIENT_TO_WORLD
+// Object-space gradient to world coordinates: the inverse transpose of the volume matrix.
 uniform mat3 in_gradientToWorld;
+#endif
 
 // The direction from a ray to the viewer, in world coordinates.
 vec3 trcToViewer(TrcRay ray)

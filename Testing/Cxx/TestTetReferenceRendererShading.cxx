@@ -18,7 +18,8 @@
 // is not positive, no highlight where n.h is not). Checked to 1e-12 for a scene light, a
 // headlight and a camera light, two-sided and one-sided, perspective and parallel; a constant
 // field (zero gradient) gets the ambient term alone; blend modes other than compositing and
-// scenes are not shaded (the latter refused with an error).
+// scenes are not shaded (the latter refused with an error). Gradient opacity likewise: the
+// function at |g| scales the attenuation.
 #include "TetReferenceTestUtilities.h"
 
 #include "vtkLight.h"
@@ -279,6 +280,59 @@ int TestTetReferenceRendererShading(int, char*[])
     double stats[3];
     TRC_CHECK(vtkTetReferenceRenderer::CompareImages(images[0], images[1], stats));
     TRC_CHECK(stats[2] == 0.0);
+  }
+
+  // Gradient opacity: the cube's |g| = 0.616 maps to k = 0.2 + 0.8 |g| through a ramp, which
+  // scales the attenuation (alpha = 1 - exp(-k tau chord)), shaded or not; outside a function
+  // that does not clamp, k = 0 (nothing drawn); disabled, k = 1.
+  {
+    const double magnitude = std::sqrt(Dot(g, g));
+    const double k = 0.2 + 0.8 * magnitude;
+    vtkNew<vtkPiecewiseFunction> ramp;
+    ramp->AddPoint(0.0, 0.2);
+    ramp->AddPoint(1.0, 1.0);
+    property->SetGradientOpacity(ramp);
+    auto camera = trc::MakeCamera(focal, direction, up, 8.0, false, 30.0, 1.0, 20.0);
+    vtkNew<vtkLightCollection> lights;
+    lights->AddItem(MakeLight(VTK_LIGHT_TYPE_SCENE_LIGHT, scenePosition, warm, 0.9));
+    LightSpec spec;
+    for (int c = 0; c < 3; ++c)
+    {
+      spec.ToLight[c] = scenePosition[c];
+      spec.Diffuse[c] = 0.9 * warm[c];
+      spec.Specular[c] = 0.9 * (c == 0 ? 0.5 : (c == 1 ? 0.7 : 1.0));
+    }
+    Normalize(spec.ToLight);
+    Material unlit;
+    unlit.Ka = 1.0;
+    unlit.Kd = 0.0;
+    unlit.Ks = 0.0;
+    property->ShadeOff();
+    double worst = 0.0;
+    TRC_CHECK(
+      CheckImage(cube, property, camera, lights, {}, true, k * tau, c, g, unlit, worst) > 100);
+    std::cout << "gradient opacity: largest difference " << worst << "\n";
+    TRC_CHECK(worst <= 1e-12);
+    property->ShadeOn();
+    worst = 0.0;
+    TRC_CHECK(
+      CheckImage(cube, property, camera, lights, { spec }, true, k * tau, c, g, m, worst) > 100);
+    std::cout << "gradient opacity, shaded: largest difference " << worst << "\n";
+    TRC_CHECK(worst <= 1e-12);
+    ramp->RemoveAllPoints();
+    ramp->AddPoint(1.0, 1.0);
+    ramp->AddPoint(2.0, 1.0);
+    ramp->ClampingOff();
+    worst = 0.0;
+    CheckImage(cube, property, camera, lights, { spec }, true, 0.0, c, g, m, worst);
+    TRC_CHECK(worst == 0.0);
+    property->DisableGradientOpacityOn();
+    worst = 0.0;
+    TRC_CHECK(
+      CheckImage(cube, property, camera, lights, { spec }, true, tau, c, g, m, worst) > 100);
+    TRC_CHECK(worst <= 1e-12);
+    property->DisableGradientOpacityOff();
+    property->SetGradientOpacity(nullptr);
   }
 
   // A scene refuses a shaded volume, with an error.

@@ -198,9 +198,10 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     ok = Expect(scene.Mapper->GetStatistics()->GetRendered(), "seven clipping planes: drawn") && ok;
   }
 
-  // Gradient opacity is not drawn: it says so once; a gradient opacity of 1 everywhere (as
-  // ParaView sets) changes nothing and says nothing. Shading is drawn, silently, except for what
-  // it does not do as asked: a positional light is lit as a directional one (said once).
+  // Shading and gradient opacity are drawn, silently, except for what they do not do as asked:
+  // a gradient opacity of curved intervals (midpoint, sharpness) is sampled, a positional light
+  // is lit as a directional one (said once each). A gradient opacity of 1 everywhere (as
+  // ParaView sets) changes nothing and says nothing.
   {
     auto property = trctest::MakePropertyFor(spx, 0.1);
     vtkNew<vtkPiecewiseFunction> one;
@@ -222,10 +223,15 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     ramp->AddPoint(100.0, 1.0);
     property->SetGradientOpacity(ramp);
     scene.Window->Render();
+    ok = Expect(scene.Warnings->Count == 0,
+           "gradient opacity: no warning (got: " + scene.Warnings->Text + ")") &&
+      ok;
+    ramp->AddPoint(0.0, 0.0, 0.3, 0.5);
     scene.Window->Render();
-    ok = Expect(scene.Warnings->Count == 1 &&
-             scene.Warnings->Text.find("Gradient opacity") != std::string::npos,
-           "gradient opacity: one warning (got: " + scene.Warnings->Text + ")") &&
+    scene.Window->Render();
+    ok = Expect(
+           scene.Warnings->Count == 1 && scene.Warnings->Text.find("sampled") != std::string::npos,
+           "a curved gradient opacity: one warning (got: " + scene.Warnings->Text + ")") &&
       ok;
     vtkNew<vtkLight> spot;
     spot->PositionalOn();
