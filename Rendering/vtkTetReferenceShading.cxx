@@ -108,9 +108,28 @@ void vtkTetReferenceShading::Initialize(vtkVolumeProperty* property, vtkLightCol
 //------------------------------------------------------------------------------
 bool vtkTetReferenceShading::DependsOnGradient(vtkVolumeProperty* property)
 {
-  return property &&
-    (property->GetShade(0) ||
-      (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0)));
+  if (!property)
+  {
+    return false;
+  }
+  if (property->GetShade(0))
+  {
+    return true;
+  }
+  vtkPiecewiseFunction* f = property->HasGradientOpacity(0) &&
+      !property->GetDisableGradientOpacity(0)
+    ? property->GetStoredGradientOpacity(0)
+    : nullptr;
+  // A function that is 1 everywhere changes nothing (VTK creates one wherever a property is
+  // copied or its gradient opacity is read).
+  bool changes = f && f->GetSize() > 0 && !f->GetClamping();
+  for (int i = 0; f && i < f->GetSize() && !changes; ++i)
+  {
+    double node[4];
+    f->GetNodeValue(i, node);
+    changes = node[1] != 1.0;
+  }
+  return changes;
 }
 
 //------------------------------------------------------------------------------

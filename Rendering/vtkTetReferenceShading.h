@@ -66,8 +66,8 @@ public:
   bool GetGradientOpacityEnabled() const { return this->GradientOpacity != nullptr; }
 
   /**
-   * Whether the property shades (component 0) or has a gradient opacity that is not disabled:
-   * what a scene refuses.
+   * Whether the property shades (component 0) or has a gradient opacity that is not disabled
+   * and changes something (not 1 at every node with clamping on): what a scene refuses.
    */
   static bool DependsOnGradient(vtkVolumeProperty* property);
 
