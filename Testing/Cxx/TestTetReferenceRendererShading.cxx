@@ -29,6 +29,19 @@
 
 namespace
 {
+// The scene: colour and attenuation of the constant transfer function, the cube's field
+// gradient, the camera (direction from the focal point towards the camera) and a scene light.
+const double c[3] = { 0.9, 0.6, 0.3 };
+const double tau = 0.7;
+const double origin[3] = { 0, 0, 0 };
+const double g[3] = { 0.3, -0.2, 0.5 };
+const double focal[3] = { 1, 1, 1 };
+const double direction[3] = { 0.4, -0.7, 1.0 };
+const double up[3] = { 0, 0, 1 };
+const double scenePosition[3] = { -1.0, 2.0, -3.0 };
+const double warm[3] = { 1.0, 0.8, 0.6 };
+const double cool[3] = { 0.6, 0.8, 1.0 };
+
 struct Material
 {
   double Ka = 0.15, Kd = 0.6, Ks = 0.4, Power = 12.0;
@@ -68,9 +81,8 @@ void Expected(vtkCamera* camera, int size, int i, int j, double tau, const doubl
   }
   const double lo[3] = { 0, 0, 0 }, hi[3] = { 2, 2, 2 };
   double t0, t1;
-  const double chord = trc::SlabInterval(nearP, d, lo, hi, 0.0, 1.0, t0, t1)
-    ? (t1 - t0) * std::sqrt(Dot(d, d))
-    : 0.0;
+  const double chord =
+    trc::SlabInterval(nearP, d, lo, hi, 0.0, 1.0, t0, t1) ? (t1 - t0) * std::sqrt(Dot(d, d)) : 0.0;
   const double alpha = -std::expm1(-tau * chord);
   double n[3] = { -g[0], -g[1], -g[2] };
   const bool flat = Dot(g, g) == 0.0;
@@ -151,12 +163,65 @@ int CheckImage(vtkUnstructuredGrid* cube, vtkVolumeProperty* property, vtkCamera
   }
   return hit;
 }
+
+// Gradient opacity: the cube's |g| = 0.616 maps to k = 0.2 + 0.8 |g| through a ramp, which
+// scales the attenuation (alpha = 1 - exp(-k tau chord)), shaded or not; outside a function
+// that does not clamp, k = 0 (nothing drawn); disabled, k = 1.
+int CheckGradientOpacity(vtkVolumeProperty* property, vtkUnstructuredGrid* cube)
+{
+  const Material m;
+  const double magnitude = std::sqrt(Dot(g, g));
+  const double k = 0.2 + 0.8 * magnitude;
+  vtkNew<vtkPiecewiseFunction> ramp;
+  ramp->AddPoint(0.0, 0.2);
+  ramp->AddPoint(1.0, 1.0);
+  property->SetGradientOpacity(ramp);
+  auto camera = trc::MakeCamera(focal, direction, up, 8.0, false, 30.0, 1.0, 20.0);
+  vtkNew<vtkLightCollection> lights;
+  lights->AddItem(MakeLight(VTK_LIGHT_TYPE_SCENE_LIGHT, scenePosition, warm, 0.9));
+  LightSpec spec;
+  for (int c = 0; c < 3; ++c)
+  {
+    spec.ToLight[c] = scenePosition[c];
+    spec.Diffuse[c] = 0.9 * warm[c];
+    spec.Specular[c] = 0.9 * (c == 0 ? 0.5 : (c == 1 ? 0.7 : 1.0));
+  }
+  Normalize(spec.ToLight);
+  Material unlit;
+  unlit.Ka = 1.0;
+  unlit.Kd = 0.0;
+  unlit.Ks = 0.0;
+  property->ShadeOff();
+  double worst = 0.0;
+  TRC_CHECK(
+    CheckImage(cube, property, camera, lights, {}, true, k * tau, c, g, unlit, worst) > 100);
+  std::cout << "gradient opacity: largest difference " << worst << "\n";
+  TRC_CHECK(worst <= 1e-12);
+  property->ShadeOn();
+  worst = 0.0;
+  TRC_CHECK(
+    CheckImage(cube, property, camera, lights, { spec }, true, k * tau, c, g, m, worst) > 100);
+  std::cout << "gradient opacity, shaded: largest difference " << worst << "\n";
+  TRC_CHECK(worst <= 1e-12);
+  ramp->RemoveAllPoints();
+  ramp->AddPoint(1.0, 1.0);
+  ramp->AddPoint(2.0, 1.0);
+  ramp->ClampingOff();
+  worst = 0.0;
+  CheckImage(cube, property, camera, lights, { spec }, true, 0.0, c, g, m, worst);
+  TRC_CHECK(worst == 0.0);
+  property->DisableGradientOpacityOn();
+  worst = 0.0;
+  TRC_CHECK(CheckImage(cube, property, camera, lights, { spec }, true, tau, c, g, m, worst) > 100);
+  TRC_CHECK(worst <= 1e-12);
+  property->DisableGradientOpacityOff();
+  property->SetGradientOpacity(nullptr);
+  return EXIT_SUCCESS;
+}
 } // namespace
 
 int TestTetReferenceRendererShading(int, char*[])
 {
-  const double c[3] = { 0.9, 0.6, 0.3 };
-  const double tau = 0.7;
   const Material m;
   auto property = trc::ConstantProperty(tau, c);
   property->ShadeOn();
@@ -165,24 +230,16 @@ int TestTetReferenceRendererShading(int, char*[])
   property->SetSpecular(m.Ks);
   property->SetSpecularPower(m.Power);
 
-  const double origin[3] = { 0, 0, 0 };
-  const double g[3] = { 0.3, -0.2, 0.5 };
-  auto linear = [&g](double x, double y, double z) { return 1.0 + g[0] * x + g[1] * y + g[2] * z; };
+  auto linear = [](double x, double y, double z) { return 1.0 + g[0] * x + g[1] * y + g[2] * z; };
   auto cube = trc::MakeGrid(2, 2, 2, origin, 1.0, trc::Split::Five, linear);
   const double zero[3] = { 0, 0, 0 };
-  auto flat = trc::MakeGrid(2, 2, 2, origin, 1.0, trc::Split::Six,
-    [](double, double, double) { return 1.5; });
+  auto flat = trc::MakeGrid(
+    2, 2, 2, origin, 1.0, trc::Split::Six, [](double, double, double) { return 1.5; });
 
-  const double focal[3] = { 1, 1, 1 };
-  const double direction[3] = { 0.4, -0.7, 1.0 }; // from the focal point towards the camera
-  const double up[3] = { 0, 0, 1 };
-  const double scenePosition[3] = { -1.0, 2.0, -3.0 };
-  const double warm[3] = { 1.0, 0.8, 0.6 };
-  const double cool[3] = { 0.6, 0.8, 1.0 };
   for (bool parallel : { false, true })
   {
-    auto camera = trc::MakeCamera(focal, direction, up, 8.0, parallel, parallel ? 2.0 : 30.0,
-      1.0, 20.0);
+    auto camera =
+      trc::MakeCamera(focal, direction, up, 8.0, parallel, parallel ? 2.0 : 30.0, 1.0, 20.0);
     // A scene light, a headlight (the camera's direction whatever its own position) and a camera
     // light (placed in the camera's frame: its position (1, 0, 1) is to the right and behind).
     auto scene = MakeLight(VTK_LIGHT_TYPE_SCENE_LIGHT, scenePosition, warm, 0.9);
@@ -228,14 +285,15 @@ int TestTetReferenceRendererShading(int, char*[])
       double worst = 0.0;
       const int hit =
         CheckImage(cube, property, camera, lights, specs, twoSided, tau, c, g, m, worst);
-      std::cout << (parallel ? "parallel" : "perspective") << (twoSided ? ", two-sided" : ", one-sided")
-                << ": " << hit << " pixels, largest difference " << worst << "\n";
+      std::cout << (parallel ? "parallel" : "perspective")
+                << (twoSided ? ", two-sided" : ", one-sided") << ": " << hit
+                << " pixels, largest difference " << worst << "\n";
       TRC_CHECK(hit > 100);
       TRC_CHECK(worst <= 1e-12);
       // The field's opposite: one-sided lighting then lights the other side.
       const double minusG[3] = { -g[0], -g[1], -g[2] };
       auto opposite = trc::MakeGrid(2, 2, 2, origin, 1.0, trc::Split::Six,
-        [&g](double x, double y, double z) { return 3.0 - g[0] * x - g[1] * y - g[2] * z; });
+        [](double x, double y, double z) { return 3.0 - g[0] * x - g[1] * y - g[2] * z; });
       worst = 0.0;
       TRC_CHECK(CheckImage(opposite, property, camera, lights, specs, twoSided, tau, c, minusG, m,
                   worst) > 100);
@@ -282,58 +340,7 @@ int TestTetReferenceRendererShading(int, char*[])
     TRC_CHECK(stats[2] == 0.0);
   }
 
-  // Gradient opacity: the cube's |g| = 0.616 maps to k = 0.2 + 0.8 |g| through a ramp, which
-  // scales the attenuation (alpha = 1 - exp(-k tau chord)), shaded or not; outside a function
-  // that does not clamp, k = 0 (nothing drawn); disabled, k = 1.
-  {
-    const double magnitude = std::sqrt(Dot(g, g));
-    const double k = 0.2 + 0.8 * magnitude;
-    vtkNew<vtkPiecewiseFunction> ramp;
-    ramp->AddPoint(0.0, 0.2);
-    ramp->AddPoint(1.0, 1.0);
-    property->SetGradientOpacity(ramp);
-    auto camera = trc::MakeCamera(focal, direction, up, 8.0, false, 30.0, 1.0, 20.0);
-    vtkNew<vtkLightCollection> lights;
-    lights->AddItem(MakeLight(VTK_LIGHT_TYPE_SCENE_LIGHT, scenePosition, warm, 0.9));
-    LightSpec spec;
-    for (int c = 0; c < 3; ++c)
-    {
-      spec.ToLight[c] = scenePosition[c];
-      spec.Diffuse[c] = 0.9 * warm[c];
-      spec.Specular[c] = 0.9 * (c == 0 ? 0.5 : (c == 1 ? 0.7 : 1.0));
-    }
-    Normalize(spec.ToLight);
-    Material unlit;
-    unlit.Ka = 1.0;
-    unlit.Kd = 0.0;
-    unlit.Ks = 0.0;
-    property->ShadeOff();
-    double worst = 0.0;
-    TRC_CHECK(
-      CheckImage(cube, property, camera, lights, {}, true, k * tau, c, g, unlit, worst) > 100);
-    std::cout << "gradient opacity: largest difference " << worst << "\n";
-    TRC_CHECK(worst <= 1e-12);
-    property->ShadeOn();
-    worst = 0.0;
-    TRC_CHECK(
-      CheckImage(cube, property, camera, lights, { spec }, true, k * tau, c, g, m, worst) > 100);
-    std::cout << "gradient opacity, shaded: largest difference " << worst << "\n";
-    TRC_CHECK(worst <= 1e-12);
-    ramp->RemoveAllPoints();
-    ramp->AddPoint(1.0, 1.0);
-    ramp->AddPoint(2.0, 1.0);
-    ramp->ClampingOff();
-    worst = 0.0;
-    CheckImage(cube, property, camera, lights, { spec }, true, 0.0, c, g, m, worst);
-    TRC_CHECK(worst == 0.0);
-    property->DisableGradientOpacityOn();
-    worst = 0.0;
-    TRC_CHECK(
-      CheckImage(cube, property, camera, lights, { spec }, true, tau, c, g, m, worst) > 100);
-    TRC_CHECK(worst <= 1e-12);
-    property->DisableGradientOpacityOff();
-    property->SetGradientOpacity(nullptr);
-  }
+  TRC_CHECK(CheckGradientOpacity(property, cube) == EXIT_SUCCESS);
 
   // A scene refuses a shaded volume, with an error.
   {
@@ -344,8 +351,7 @@ int TestTetReferenceRendererShading(int, char*[])
     renderer->SetCamera(camera);
     renderer->AddVolume(cube, property);
     TRC_CHECK(renderer->Render() == 0);
-    TRC_CHECK(errors->GetError() &&
-      errors->GetErrorMessage().find("shaded") != std::string::npos);
+    TRC_CHECK(errors->GetError() && errors->GetErrorMessage().find("shaded") != std::string::npos);
   }
   return EXIT_SUCCESS;
 }
