@@ -16,6 +16,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkTetRayIntegrator.h"
+#include "vtkTetReferenceShading.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -32,8 +33,10 @@ constexpr double TerminationDepth = 36.0; // exp(-36) = 2.3e-16
 void vtkTetReferenceCompositing::CompositeRay(
   const std::vector<vtkTetReferenceRayCaster::Hit>& hits,
   const std::vector<unsigned char>& transparent, vtkTetRayIntegrator* integrator, double unitLength,
-  double rgba[4])
+  double rgba[4], const vtkTetReferenceShading* shading, const double d[3])
 {
+  const bool shaded = shading && shading->GetEnabled() && d;
+  const bool gradientOpacity = shading && shading->GetGradientOpacityEnabled();
   double color[3] = { 0.0, 0.0, 0.0 };
   double opticalDepth = 0.0;
   for (const vtkTetReferenceRayCaster::Hit& hit : hits)
@@ -43,8 +46,14 @@ void vtkTetReferenceCompositing::CompositeRay(
       continue;
     }
     double segment[4], segmentDepth;
+    // Gradient opacity scales the attenuation, constant over the segment: its length.
+    const double scale = gradientOpacity ? shading->OpacityScale(hit.Tet) : 1.0;
     integrator->IntegrateWithDepth(
-      hit.S0, hit.S1, (hit.Z1 - hit.Z0) * unitLength, segment, &segmentDepth);
+      hit.S0, hit.S1, (hit.Z1 - hit.Z0) * unitLength * scale, segment, &segmentDepth);
+    if (shaded)
+    {
+      shading->Apply(hit.Tet, d, -std::expm1(-segmentDepth), segment);
+    }
     const double transmittance = std::exp(-opticalDepth);
     for (int k = 0; k < 3; ++k)
     {

@@ -28,6 +28,7 @@
 
 class vtkImageData;
 class vtkTetRayIntegrator;
+class vtkTetReferenceShading;
 
 class vtkTetReferenceCompositing
 {
@@ -35,11 +36,14 @@ public:
   /**
    * Front-to-back compositing of `hits` (sorted; those of `transparent` tetrahedra skipped) into
    * premultiplied RGBA; `unitLength` is the length of a unit of the ray parameter. Stops once
-   * what lies behind can change no value.
+   * what lies behind can change no value. With `shading` (enabled), each segment's colour is
+   * shaded for its tetrahedron seen along the ray's direction `d`, and its attenuation scaled by
+   * the tetrahedron's gradient opacity.
    */
   static void CompositeRay(const std::vector<vtkTetReferenceRayCaster::Hit>& hits,
     const std::vector<unsigned char>& transparent, vtkTetRayIntegrator* integrator,
-    double unitLength, double rgba[4]);
+    double unitLength, double rgba[4], const vtkTetReferenceShading* shading = nullptr,
+    const double d[3] = nullptr);
 
   ///@{
   /**

@@ -16,6 +16,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLightCollection.h"
 #include "vtkIntArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -33,6 +34,7 @@
 #include "vtkTetReferencePixelRays.h"
 #include "vtkTetReferenceRayCaster.h"
 #include "vtkTetReferenceScene.h"
+#include "vtkTetReferenceShading.h"
 #include "vtkTetReferenceVolume.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
@@ -63,6 +65,8 @@ class vtkTetReferenceRenderer::vtkInternals
 {
 public:
   vtkTetReferenceMesh Mesh;
+  // Shading of the composite blend mode (off unless the property shades).
+  vtkTetReferenceShading Shading;
 
   // The property the integrator was initialised with.
   vtkVolumeProperty* Property = nullptr;
@@ -114,7 +118,7 @@ void vtkTetReferenceRenderer::vtkInternals::CastRays(const PixelRays& rays,
             if (blending.Mode == 0)
             {
               vtkTetReferenceCompositing::CompositeRay(
-                hits, this->Mesh.Transparent, integrator, unitLength, result);
+                hits, this->Mesh.Transparent, integrator, unitLength, result, &this->Shading, d);
             }
             else
             {
@@ -177,6 +181,7 @@ vtkTetReferenceRenderer::~vtkTetReferenceRenderer()
   this->SetVolume(nullptr);
   this->SetOpaqueDepth(nullptr);
   this->SetClippingPlanes(nullptr);
+  this->SetLights(nullptr);
   this->SetArrayName(nullptr);
   this->VolumeMatrix->Delete();
   this->Output->Delete();
@@ -212,6 +217,12 @@ void vtkTetReferenceRenderer::SetCamera(vtkCamera* camera)
 void vtkTetReferenceRenderer::SetVolume(vtkVolume* volume)
 {
   vtkSetObjectBodyMacro(Volume, vtkVolume, volume);
+}
+
+//------------------------------------------------------------------------------
+void vtkTetReferenceRenderer::SetLights(vtkLightCollection* lights)
+{
+  vtkSetObjectBodyMacro(Lights, vtkLightCollection, lights);
 }
 
 //------------------------------------------------------------------------------
@@ -344,6 +355,9 @@ int vtkTetReferenceRenderer::Render()
   {
     return 0;
   }
+  // Shading and gradient opacity apply to compositing only, as in VTK's volume mappers.
+  in.Shading.Initialize(this->BlendMode == 0 ? property : nullptr, this->Lights, this->Camera,
+    this->TwoSidedLighting != 0, &in.Mesh);
 
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
@@ -546,6 +560,19 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
                                 << " renders one volume without translucent layers; a scene of "
                                    "several volumes or with layers needs the composite mode.");
     return 0;
+  }
+  for (size_t v = 0; v <= in.Added.size(); ++v)
+  {
+    vtkVolumeProperty* p = v == 0 ? (this->Input ? property : nullptr)
+                                  : in.Added[v - 1]->GetPropertyInForce();
+    if (vtkTetReferenceShading::DependsOnGradient(p))
+    {
+      // The mixture of overlapping media would need each medium's shaded emission apart.
+      vtkErrorMacro("Volume " << (this->Input ? v : v - 1)
+                              << " is shaded or has a gradient opacity: these render one volume "
+                                 "without translucent layers, not a scene.");
+      return 0;
+    }
   }
   const vtkIdType numPixels = static_cast<vtkIdType>(this->ImageSize[0]) * this->ImageSize[1];
   vtkTetReferenceIntermixing scene;
@@ -758,6 +785,8 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Volume: " << this->Volume << "\n";
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
+  os << indent << "Lights: " << this->Lights << "\n";
+  os << indent << "TwoSidedLighting: " << this->TwoSidedLighting << "\n";
   os << indent << "BlendMode: " << this->BlendMode << "\n";
   os << indent << "AverageIPScalarRange: " << this->AverageIPScalarRange[0] << " "
      << this->AverageIPScalarRange[1] << "\n";

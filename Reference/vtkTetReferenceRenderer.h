@@ -85,6 +85,7 @@ class vtkDataSet;
 class vtkPlaneCollection;
 class vtkFloatArray;
 class vtkImageData;
+class vtkLightCollection;
 class vtkMatrix4x4;
 class vtkTetRayIntegrator;
 class vtkTetReferenceVolume;
@@ -159,6 +160,24 @@ public:
    */
   void SetCamera(vtkCamera* camera);
   vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /**
+   * The lights of shading (vtkVolumeProperty::ShadeOn, docs/design.md "Shading"), as a
+   * renderer's (vtkRenderer::GetLights(); kept by reference), and whether lighting is two-sided
+   * (vtkRenderer::GetTwoSidedLighting(), default on). Every light is directional; headlights
+   * follow the camera and camera lights are placed by it, as the renderer places them. No
+   * lights: a shaded volume gets the ambient term alone. Shading and gradient opacity (the
+   * property's, scaling each tetrahedron's attenuation by its gradient's magnitude in scalar
+   * units per world unit) apply to the composite blend mode of one volume; a scene
+   * (AddVolume(), AddTranslucentLayer()) refuses a property with either.
+   */
+  void SetLights(vtkLightCollection* lights);
+  vtkGetObjectMacro(Lights, vtkLightCollection);
+  vtkSetMacro(TwoSidedLighting, vtkTypeBool);
+  vtkGetMacro(TwoSidedLighting, vtkTypeBool);
+  vtkBooleanMacro(TwoSidedLighting, vtkTypeBool);
   ///@}
 
   ///@{
@@ -349,6 +368,8 @@ protected:
   vtkVolume* Volume;
   vtkFloatArray* OpaqueDepth;
   vtkPlaneCollection* ClippingPlanes = nullptr;
+  vtkLightCollection* Lights = nullptr;
+  vtkTypeBool TwoSidedLighting = 1;
   int BlendMode = 0;
   double AverageIPScalarRange[2] = { -1.0e300, 1.0e300 };
   double SampleOffset[2];

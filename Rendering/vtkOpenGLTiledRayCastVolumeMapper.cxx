@@ -50,6 +50,8 @@
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastIntegrationChoice.h"
+#include "vtkTiledRayCastGradientOpacityNodes.h"
+#include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
@@ -74,6 +76,7 @@
 #include "vtkTiledRayCastCompositeFS.h"
 #include "vtkTiledRayCastCopyFS.h"
 #include "vtkTiledRayCastCountFS.h"
+#include "vtkTiledRayCastGradientOpacity.h"
 #include "vtkTiledRayCastNearSliceFS.h"
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
@@ -83,6 +86,7 @@
 #include "vtkTiledRayCastPreIntegration2D.h"
 #include "vtkTiledRayCastPreIntegration3D.h"
 #include "vtkTiledRayCastQuadVS.h"
+#include "vtkTiledRayCastShading.h"
 #include "vtkTiledRayCastTraversalFS.h"
 #include "vtkTiledRayCastWalk.h"
 
@@ -441,13 +445,17 @@ public:
   unsigned long DeferredObserver = 0;
   bool DeferredPending = false;
   bool DrawingDeferred = false;
-  bool WarnedShading = false;
+  bool WarnedPositionalLights = false;
+  bool WarnedIgnoredLights = false;
+  bool WarnedShadedCellScalars = false;
   bool WarnedGradientOpacity = false;
   bool WarnedStoppedRays = false;
   std::string LastError;
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
+  vtkTiledRayCastLighting Lighting;
+  vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   std::vector<Tile> Tiles;
   // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
   // them when that count was zero.
@@ -489,8 +497,9 @@ public:
   // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
   // then marks the volume with itself as a render pass.
   static bool InsideVolumetricPeeling(vtkVolume* volume);
-  // Once each: the property asks for shading or gradient opacity, which are not drawn.
-  void WarnUnsupportedProperty(vtkVolumeProperty* property);
+  // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
+  // GradientOpacity).
+  void WarnLighting();
   bool CheckContext(vtkOpenGLRenderWindow* window);
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
@@ -511,6 +520,7 @@ public:
   void SetCoverageUniforms(vtkShaderProgram* program) override;
   void SetIntegrationUniforms(vtkShaderProgram* program) override;
   void SetBlendUniforms(vtkShaderProgram* program);
+  void SetShadingUniforms(vtkShaderProgram* program);
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
@@ -759,33 +769,38 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::InsideVolumetricPeeling(vt
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnUnsupportedProperty(
-  vtkVolumeProperty* property)
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
 {
+  const vtkTiledRayCastLighting& lighting = this->Lighting;
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  if (property->GetShade(0) && !this->WarnedShading)
+  if (lighting.NumberOfPositionalLights > 0 && !this->WarnedPositionalLights)
   {
-    vtkWarningWithObjectMacro(self, "Shading (vtkVolumeProperty::ShadeOn) is not supported by "
-                                    "this mapper yet: the volume is drawn unshaded.");
-    this->WarnedShading = true;
+    vtkWarningWithObjectMacro(self, "Shading lights every light as a directional one: a "
+                                    "positional light shines from its position towards its focal "
+                                    "point, without attenuation or cone.");
+    this->WarnedPositionalLights = true;
   }
-  // A gradient opacity function that is 1 everywhere changes nothing (ParaView sets one).
-  bool gradientOpacity = false;
-  if (property->HasGradientOpacity(0) && !property->GetDisableGradientOpacity(0))
+  if (lighting.NumberOfIgnoredLights > 0 && !this->WarnedIgnoredLights)
   {
-    vtkPiecewiseFunction* f = property->GetStoredGradientOpacity(0);
-    for (int i = 0; f && i < f->GetSize() && !gradientOpacity; ++i)
-    {
-      double node[4];
-      f->GetNodeValue(i, node);
-      gradientOpacity = node[1] != 1.0;
-    }
+    vtkWarningWithObjectMacro(self, "Shading uses the first "
+        << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
+        << lighting.NumberOfIgnoredLights << " more are ignored.");
+    this->WarnedIgnoredLights = true;
   }
-  if (gradientOpacity && !this->WarnedGradientOpacity)
+  if (this->GradientOpacity.Approximated && !this->WarnedGradientOpacity)
   {
-    vtkWarningWithObjectMacro(self, "Gradient opacity is not supported by this mapper: the "
-                                    "volume's opacity depends on the scalar alone.");
+    vtkWarningWithObjectMacro(self,
+      "The gradient opacity function has intervals of another midpoint or sharpness than 0.5 and "
+      "0, or more than "
+        << vtkTiledRayCastGradientOpacityNodes::MaximumNodes
+        << " nodes: it is sampled (linear between samples).");
     this->WarnedGradientOpacity = true;
+  }
+  if (lighting.Enabled && this->HasCellScalars && !this->WarnedShadedCellScalars)
+  {
+    vtkWarningWithObjectMacro(self, "Shading cell scalars: they are constant per cell, their "
+                                    "gradient is zero, so only the ambient term lights them.");
+    this->WarnedShadedCellScalars = true;
   }
 }
 
@@ -1280,6 +1295,20 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
       integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
     integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
   }
+  else
+  {
+    // Shaded walks, or walks with gradient opacity, only where the property asks: the walk
+    // without them stays as it is.
+    if (this->Lighting.Enabled)
+    {
+      integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
+    }
+    if (this->GradientOpacity.Enabled)
+    {
+      integrationCode =
+        "#define TRC_GRADIENT_OPACITY\n" + integrationCode + vtkTiledRayCastGradientOpacity;
+    }
+  }
   std::vector<std::pair<std::string, std::string>> common = {
     { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
     { "//TRC::Layout::Dec", layoutCode },
@@ -1769,6 +1798,36 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShaderProgram* p)
+{
+  const vtkTiledRayCastLighting& lighting = this->Lighting;
+  const vtkTiledRayCastGradientOpacityNodes& gradientOpacity = this->GradientOpacity;
+  if (lighting.Enabled || gradientOpacity.Enabled)
+  {
+    p->SetUniformMatrix3x3("in_gradientToWorld", const_cast<float*>(lighting.GradientToWorld));
+  }
+  if (gradientOpacity.Enabled)
+  {
+    p->SetUniformi("in_gradientOpacityNodes", gradientOpacity.NumberOfNodes);
+    p->SetUniform2fv("in_gradientOpacity", gradientOpacity.NumberOfNodes, gradientOpacity.Nodes[0]);
+    p->SetUniformi("in_gradientOpacityClamping", gradientOpacity.Clamping);
+  }
+  if (!lighting.Enabled)
+  {
+    return;
+  }
+  p->SetUniform4f("in_material", lighting.Material);
+  p->SetUniformi("in_twoSidedLighting", lighting.TwoSided);
+  p->SetUniformi("in_numberOfLights", lighting.NumberOfLights);
+  if (lighting.NumberOfLights > 0)
+  {
+    p->SetUniform3fv("in_lightToLight", lighting.NumberOfLights, lighting.ToLight);
+    p->SetUniform3fv("in_lightDiffuse", lighting.NumberOfLights, lighting.Diffuse);
+    p->SetUniform3fv("in_lightSpecular", lighting.NumberOfLights, lighting.Specular);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->IntegrationMode();
@@ -1782,8 +1841,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtk
     {
       this->SetBlendUniforms(p);
     }
+    this->SetShadingUniforms(p);
     return;
   }
+  this->SetShadingUniforms(p);
   vtkTiledRayCastPreIntegrationTable* table = this->Table;
   int size[3];
   table->GetSize(size);
@@ -2421,7 +2482,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The volume has no property. Nothing is drawn.");
     return;
   }
-  impl->WarnUnsupportedProperty(property);
 
   int width = 0, height = 0;
   ren->GetTiledSizeAndOrigin(&width, &height, &impl->Viewport[0], &impl->Viewport[1]);
@@ -2442,6 +2502,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return;
   }
+  impl->Lighting.Compute(ren, vol, this->BlendMode);
+  impl->GradientOpacity.Compute(property, this->BlendMode);
+  impl->WarnLighting();
   if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
     !impl->WarnedClippingPlanes)
   {

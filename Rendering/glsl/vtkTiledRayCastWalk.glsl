@@ -32,6 +32,9 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
   uint previous = TRC_NO_NEIGHBOR;
   int status = TRC_ACTIVE;
   int taken = 0;
+#ifdef TRC_SHADING
+  vec3 toViewer = trcToViewer(ray);
+#endif
   while (status == TRC_ACTIVE && taken < maximumSteps)
   {
     ++taken;
@@ -95,7 +98,20 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
     float fromLambda = max(lambda, ray.lambdaMin);
     float sFront = dot(t.field.xyz, ray.origin + fromLambda * ray.dir) + t.field.w;
     float sBack = dot(t.field.xyz, ray.origin + endLambda * ray.dir) + t.field.w;
-    trcIntegrate(sFront, sBack, (endLambda - fromLambda) * ray.worldScale, color);
+    float segmentLength = (endLambda - fromLambda) * ray.worldScale;
+#ifdef TRC_GRADIENT_OPACITY
+    // The tet's gradient opacity scales its attenuation: the same as scaling the length
+    // (vtkTiledRayCastGradientOpacity.glsl).
+    segmentLength *= trcGradientOpacity(t.field.xyz);
+#endif
+#ifdef TRC_SHADING
+    // Integrated unshaded on its own, then shaded as a whole (vtkTiledRayCastShading.glsl).
+    vec4 segment = vec4(0.0);
+    trcIntegrate(sFront, sBack, segmentLength, segment);
+    trcCompositeShaded(segment, t.field.xyz, toViewer, color);
+#else
+    trcIntegrate(sFront, sBack, segmentLength, color);
+#endif
     lambda = endLambda;
 
     if (color.a >= in_earlyTerminationOpacity)

@@ -21,6 +21,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
+#include "vtkLightKit.h"
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
@@ -288,6 +289,38 @@ bool LoadThick(Scene& s, int mode)
   return true;
 }
 
+// Shading (vtkVolumeProperty::ShadeOn) of spx under the renderer's headlight, with a highlight
+// strong enough to show: every segment's colour is scaled and offset by its tet's normal, the
+// reference computing the same model from the mesh's own points in double.
+bool LoadShaded(Scene& s, int argc, char* argv[], double fraction = 0.03)
+{
+  if (!s.Load(argc, argv, "spx_vistrails.vtu", fraction))
+    return false;
+  vtkVolumeProperty* property = s.Volume->GetProperty();
+  property->ShadeOn();
+  property->SetAmbient(0.25);
+  property->SetDiffuse(0.7);
+  property->SetSpecular(0.5);
+  property->SetSpecularPower(20.0);
+  s.View(20, 30);
+  return true;
+}
+
+// Gradient opacity: a ramp over spx's gradient magnitudes (scalar units per world unit: a tenth
+// of its tets below 0.03, half below 0.2, nine tenths below 1.5) that hides where the field is
+// flat, as gradient opacity is used to bring out boundaries.
+bool LoadGradientOpacity(Scene& s, int argc, char* argv[])
+{
+  if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.03))
+    return false;
+  vtkNew<vtkPiecewiseFunction> ramp;
+  ramp->AddPoint(0.05, 0.0);
+  ramp->AddPoint(1.0, 1.0);
+  s.Volume->GetProperty()->SetGradientOpacity(ramp);
+  s.View(20, 30);
+  return true;
+}
+
 // Every scene: which mesh, which view, which mapper settings, which bounds and checks.
 using SceneSetup = std::function<bool(Scene&, int, char*[])>;
 const std::map<std::string, SceneSetup>& Scenes()
@@ -527,13 +560,17 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
-    { "maximum", [](Scene& s, int argc, char* argv[])
+    { "maximum",
+      [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND); } },
-    { "minimum", [](Scene& s, int argc, char* argv[])
+    { "minimum",
+      [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); } },
-    { "average", [](Scene& s, int argc, char* argv[])
+    { "average",
+      [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::AVERAGE_INTENSITY_BLEND); } },
-    { "additive", [](Scene& s, int argc, char* argv[])
+    { "additive",
+      [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::ADDITIVE_BLEND); } },
     { "clipped", LoadClipped },
     { "clipped_fragment",
@@ -584,6 +621,97 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Bounds.P999 = 8.0;
         s.Bounds.Max = 16.0;
         s.View(20, 50);
+        return true;
+      } },
+    { "shaded", [](Scene& s, int argc, char* argv[]) { return LoadShaded(s, argc, argv); } },
+    { "shaded_fragment",
+      [](Scene& s, int argc, char* argv[])
+      {
+        s.Mapper->SetPipelineToFragment();
+        s.Check = [](Scene& t) { return RenderedWith(t, "Fragment"); };
+        return LoadShaded(s, argc, argv);
+      } },
+    { "shaded_paper",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // The paper's layout stores each tet's field: the same gradients.
+        s.Mapper->SetPipelineToFragment();
+        s.Mapper->SetMeshLayoutToPaper();
+        return LoadShaded(s, argc, argv);
+      } },
+    { "shaded_table2d",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // spx's tets are thin for this transfer function: the table holds the default bounds.
+        s.Mapper->SetIntegrationModeToPreIntegration2D();
+        return LoadShaded(s, argc, argv);
+      } },
+    { "shaded_table3d",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // spx's tets are thin for this transfer function: the table holds the default bounds.
+        s.Mapper->SetIntegrationModeToPreIntegration3D();
+        return LoadShaded(s, argc, argv);
+      } },
+    { "shaded_cells",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // Cell scalars have no gradient: the ambient term alone (one warning says so).
+        if (!LoadShaded(s, argc, argv))
+          return false;
+        vtkNew<vtkPointDataToCellData> toCells;
+        toCells->SetInputData(s.Grid);
+        toCells->Update();
+        s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+        s.Mapper->SetInputData(s.Grid);
+        s.Mapper->SetScalarModeToUseCellData();
+        return true;
+      } },
+    { "shaded_lightkit",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // VTK's light kit (a headlight, key, fill, back lights: camera lights), one-sided
+        // lighting, in a volume of non-uniform scale whose normals need the inverse transpose.
+        if (!LoadShaded(s, argc, argv))
+          return false;
+        s.Volume->SetOrientation(20, 35, -10);
+        s.Volume->SetScale(1.5, 0.7, 1.0);
+        vtkNew<vtkLightKit> kit;
+        kit->AddLightsToRenderer(s.Renderer);
+        s.Renderer->TwoSidedLightingOff();
+        s.Renderer->ResetCamera();
+        s.View(20, 30);
+        return true;
+      } },
+    { "gradient_opacity", LoadGradientOpacity },
+    { "gradient_opacity_table2d",
+      [](Scene& s, int argc, char* argv[])
+      {
+        s.Mapper->SetIntegrationModeToPreIntegration2D();
+        return LoadGradientOpacity(s, argc, argv);
+      } },
+    { "gradient_opacity_table3d",
+      [](Scene& s, int argc, char* argv[])
+      {
+        s.Mapper->SetIntegrationModeToPreIntegration3D();
+        return LoadGradientOpacity(s, argc, argv);
+      } },
+    { "gradient_opacity_shaded_paper",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // Both, in the paper's layout and pipeline, in a volume of non-uniform scale: the
+        // magnitude is measured in world units.
+        if (!LoadGradientOpacity(s, argc, argv))
+          return false;
+        s.Mapper->SetPipelineToFragment();
+        s.Mapper->SetMeshLayoutToPaper();
+        vtkVolumeProperty* property = s.Volume->GetProperty();
+        property->ShadeOn();
+        property->SetSpecular(0.5);
+        property->SetSpecularPower(20.0);
+        s.Volume->SetScale(1.5, 0.7, 1.0);
+        s.Renderer->ResetCamera();
+        s.View(20, 30);
         return true;
       } },
     { "paper",

@@ -14,6 +14,7 @@
 #include "TiledRayCastTestScene.h"
 
 #include "vtkCommand.h"
+#include "vtkLight.h"
 #include "vtkPoints.h"
 
 namespace
@@ -79,6 +80,35 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   window->Render();
   ok = Expect(Uploaded(mapper) == 0, "a camera move uploads nothing") && ok;
   ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "camera moved") && ok;
+
+  // Shading: lights are uniforms of the frame. A camera move carries the headlight along, a scene
+  // light added or moved relights the volume; none uploads anything.
+  vtkVolumeProperty* shaded = volume->GetProperty();
+  shaded->ShadeOn();
+  shaded->SetSpecular(0.5);
+  shaded->SetSpecularPower(20.0);
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded") && ok;
+  renderer->GetActiveCamera()->Azimuth(-25);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+  ok = Expect(Uploaded(mapper) == 0, "shaded: a camera move uploads nothing") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, camera moved") && ok;
+  vtkNew<vtkLight> sceneLight;
+  sceneLight->SetLightTypeToSceneLight();
+  const double* centre = volume->GetCenter();
+  sceneLight->SetFocalPoint(centre);
+  sceneLight->SetPosition(centre[0] + 1.0, centre[1] + 2.0, centre[2] - 3.0);
+  sceneLight->SetDiffuseColor(1.0, 0.7, 0.4);
+  renderer->AddLight(sceneLight);
+  window->Render();
+  ok = Expect(Uploaded(mapper) == 0, "shaded: a light added uploads nothing") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light added") && ok;
+  sceneLight->SetPosition(centre[0] - 3.0, centre[1] + 1.0, centre[2]);
+  window->Render();
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light moved") && ok;
+  renderer->RemoveLight(sceneLight);
+  shaded->ShadeOff();
 
   // The transfer function changes: only its nodes are uploaded.
   const vtkIdType meshBytes = mapper->GetStatistics()->GetMeshBytes();

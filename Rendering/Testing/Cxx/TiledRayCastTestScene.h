@@ -186,6 +186,9 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   reference->SetClippingPlanes(mapper->GetClippingPlanes());
   reference->SetBlendMode(mapper->GetBlendMode());
   reference->SetAverageIPScalarRange(mapper->GetAverageIPScalarRange());
+  // Shading: the renderer's lights, placed for this camera by the last Render().
+  reference->SetLights(renderer->GetLights());
+  reference->SetTwoSidedLighting(renderer->GetTwoSidedLighting());
   if (configure)
   {
     configure(reference);
