@@ -32,6 +32,8 @@
 //                       desired update rate is R during the warm-up and the timed frames
 //                       (AutoAdjustSampleDistances fits the rays to it), and the error is
 //                       measured on the last view then ("compute interactive R/s")
+//     --shade           shading on (vtkVolumeProperty::ShadeOn, the renderer's headlight): the
+//                       scene is named mesh+shaded
 //     --tf T            ramp (default: the scenes' ramp), band (opacity only in a band 2 % of
 //                       the scalar range wide, at its middle) or spike (0.4 % wide): the scene
 //                       is named mesh+T unless ramp, and ours is also timed without empty-space
@@ -106,6 +108,7 @@ struct Options
   std::string Order = "input";
   std::string TransferFunction = "ramp";
   double Rate = 0;
+  bool Shade = false;
   std::vector<std::string> Meshes;
 };
 
@@ -467,6 +470,8 @@ int main(int argc, char* argv[])
         return EXIT_FAILURE;
       }
     }
+    else if (a == "--shade")
+      o.Shade = true;
     else if (a == "--rate")
       o.Rate = std::max(0.0, atof(next().c_str()));
     else if (a == "--tf")
@@ -529,8 +534,9 @@ int main(int argc, char* argv[])
     std::string mesh = path.substr(path.find_last_of('/') + 1);
     const std::string scene = mesh.substr(0, mesh.find('.')) +
       (o.Order == "input" ? "" : "+" + o.Order) +
-      (o.TransferFunction == "ramp" ? "" : "+" + o.TransferFunction);
+      (o.TransferFunction == "ramp" ? "" : "+" + o.TransferFunction) + (o.Shade ? "+shaded" : "");
     vtkSmartPointer<vtkVolumeProperty> property = MakeProperty(grid, o.TransferFunction);
+    property->SetShade(o.Shade ? 1 : 0);
 
     for (int size : o.Sizes)
     {
@@ -554,6 +560,8 @@ int main(int argc, char* argv[])
         exact->SetVolumeProperty(property);
         exact->SetCamera(renderer->GetActiveCamera());
         exact->SetImageSize(size, size);
+        exact->SetLights(renderer->GetLights()); // the headlight of the first Render()
+        exact->SetTwoSidedLighting(renderer->GetTwoSidedLighting());
         vtkNew<vtkTimerLog> timer;
         timer->StartTimer();
         exact->Render();
