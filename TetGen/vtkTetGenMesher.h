@@ -60,6 +60,8 @@
 
 #include <string> // For std::string
 
+class vtkPolyData;
+
 class VTKFILTERSTETGEN_EXPORT vtkTetGenMesher : public vtkUnstructuredGridAlgorithm
 {
 public:
@@ -243,6 +245,11 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
+  // The steps of RequestData: the input's own checks (an error message, or nothing), TetGen's
+  // self-intersection check (idem), and TetGen's switches for the settings.
+  std::string CheckInput(vtkPolyData* input);
+  std::string FindSelfIntersections();
+  std::string MakeSwitches();
 
   bool Quality = false;
   double RadiusEdgeRatio = 2.0;
