@@ -65,16 +65,9 @@ int TestTiledRayCastAutomatic(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
+  if (!trctest::RenderingSupported())
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetSize(8, 8);
-    window->Render();
-    vtkNew<M> mapper;
-    vtkNew<vtkVolumeProperty> property;
-    if (!mapper->IsRenderSupported(window, property))
-    {
-      return VTK_SKIP_RETURN_CODE;
-    }
+    return VTK_SKIP_RETURN_CODE;
   }
   bool ok = true;
   {

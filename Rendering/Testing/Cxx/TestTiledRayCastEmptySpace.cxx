@@ -251,16 +251,9 @@ int TestTiledRayCastEmptySpace(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
+  if (!trctest::RenderingSupported())
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetSize(8, 8);
-    window->Render();
-    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-    vtkNew<vtkVolumeProperty> property;
-    if (!mapper->IsRenderSupported(window, property))
-    {
-      return VTK_SKIP_RETURN_CODE;
-    }
+    return VTK_SKIP_RETURN_CODE;
   }
   bool ok = TestBand(fin);
   ok = TestCellScalars(fin) && ok;

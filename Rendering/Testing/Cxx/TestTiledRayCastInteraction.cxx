@@ -213,16 +213,9 @@ int TestTiledRayCastInteraction(int argc, char* argv[])
   {
     return EXIT_FAILURE;
   }
+  if (!trctest::RenderingSupported())
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetSize(8, 8);
-    window->Render();
-    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-    vtkNew<vtkVolumeProperty> property;
-    if (!mapper->IsRenderSupported(window, property))
-    {
-      return VTK_SKIP_RETURN_CODE;
-    }
+    return VTK_SKIP_RETURN_CODE;
   }
   const int compute = vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE;
   const int fragment = vtkTiledRayCastVolumeMapper::FRAGMENT_PIPELINE;

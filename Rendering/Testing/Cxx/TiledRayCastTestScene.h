@@ -96,6 +96,17 @@ struct WatchedVolume
   }
 };
 
+// Whether this machine's OpenGL can run the mapper (tests skip, VTK_SKIP_RETURN_CODE, where not).
+inline bool RenderingSupported()
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(8, 8);
+  window->Render();
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  vtkNew<vtkVolumeProperty> property;
+  return mapper->IsRenderSupported(window, property) != 0;
+}
+
 // A mesh of Testing/Data/Meshes, found through the test driver's -D argument.
 inline vtkSmartPointer<vtkUnstructuredGrid> ReadMesh(int argc, char* argv[], const char* file)
 {
