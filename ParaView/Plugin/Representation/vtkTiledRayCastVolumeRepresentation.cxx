@@ -91,6 +91,18 @@ int vtkTiledRayCastVolumeRepresentation::GetTiledRayCastEmptySpaceSkipping()
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastMaximumError(double error)
+{
+  this->TiledRayCastMapper->SetMaximumError(error);
+}
+
+//------------------------------------------------------------------------------
+double vtkTiledRayCastVolumeRepresentation::GetTiledRayCastMaximumError()
+{
+  return this->TiledRayCastMapper->GetMaximumError();
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeRepresentation::GetTiledRayCastStatistics()
 {
   vtkTiledRayCastStatistics* statistics = this->TiledRayCastMapper->GetStatistics();

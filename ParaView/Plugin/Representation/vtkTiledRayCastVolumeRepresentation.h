@@ -51,7 +51,7 @@ public:
   /**
    * Settings of the tiled ray-cast mapper (see vtkTiledRayCastVolumeMapper): integration mode,
    * pipeline, tile size of the fragment pipeline, opacity at which rays stop, empty-space
-   * skipping.
+   * skipping, the automatic integration's error budget.
    */
   void SetTiledRayCastIntegrationMode(int mode);
   int GetTiledRayCastIntegrationMode();
@@ -63,6 +63,8 @@ public:
   double GetTiledRayCastEarlyTerminationOpacity();
   void SetTiledRayCastEmptySpaceSkipping(int skipping);
   int GetTiledRayCastEmptySpaceSkipping();
+  void SetTiledRayCastMaximumError(double error);
+  double GetTiledRayCastMaximumError();
   ///@}
 
   /**
