@@ -25,7 +25,6 @@
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderPass.h"
-#include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -48,12 +47,14 @@
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastDebugEvent.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastIntegrationChoice.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastOcclusionQueries.h"
+#include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastSampleDistance.h"
@@ -148,16 +149,6 @@ enum RayStatus
   StatusDoneOpaque = 4
 };
 
-// GPU phases timed separately.
-enum Phase
-{
-  PhaseFirstHit = 0,
-  PhasePeeling,
-  PhaseRayCasting,
-  PhaseCompositing,
-  NumberOfPhases
-};
-
 // The depth at which tile rectangles are drawn: halfway, so that the early-z marks of the
 // Z-update pass (0 for finished rays, 1 for active ones) cull or pass them.
 const float RectangleDepth = 0.0f; // NDC, window depth 0.5
@@ -165,28 +156,6 @@ const float RectangleDepth = 0.0f; // NDC, window depth 0.5
 // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
 // place: the next layer must then have a larger key than the last (both pipelines' peeling).
 const float PeelEpsilon = 2e-6f;
-
-// A name in GL debuggers (apitrace, RenderDoc) around a phase of the render.
-class ScopedDebugEvent
-{
-public:
-  explicit ScopedDebugEvent(const char* name)
-    : Name(name)
-  {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(
-      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " begin");
-  }
-  ~ScopedDebugEvent()
-  {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(
-      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " end");
-  }
-  ScopedDebugEvent(const ScopedDebugEvent&) = delete;
-  void operator=(const ScopedDebugEvent&) = delete;
-
-private:
-  const char* Name;
-};
 
 // A screen tile, in pixels of the viewport.
 struct Tile
@@ -213,56 +182,6 @@ struct Program
     this->VAO->ReleaseGraphicsResources();
     this->Key.clear();
   }
-};
-
-// GPU time of a phase that runs in several pieces (ray casting and peeling interleave).
-class PhaseTimer
-{
-public:
-  void Start()
-  {
-    if (this->Used == this->Segments.size())
-    {
-      this->Segments.emplace_back(new vtkOpenGLRenderTimer);
-    }
-    this->Segments[this->Used]->Start();
-  }
-  void Stop() { this->Segments[this->Used++]->Stop(); }
-  bool Ready() const
-  {
-    for (size_t i = 0; i < this->Used; ++i)
-    {
-      if (!this->Segments[i]->Ready())
-      {
-        return false;
-      }
-    }
-    return true;
-  }
-  // Zero for segments whose results are not there yet (vtkOpenGLRenderTimer does not wait).
-  double GetMilliseconds()
-  {
-    double ms = 0;
-    for (size_t i = 0; i < this->Used; ++i)
-    {
-      ms += this->Segments[i]->GetElapsedMilliseconds();
-    }
-    return ms;
-  }
-  void Reset() { this->Used = 0; }
-  void ReleaseGraphicsResources()
-  {
-    for (auto& t : this->Segments)
-    {
-      t->ReleaseGraphicsResources();
-    }
-    this->Segments.clear();
-    this->Used = 0;
-  }
-
-private:
-  std::vector<std::unique_ptr<vtkOpenGLRenderTimer>> Segments;
-  size_t Used = 0;
 };
 
 // A mesh array on the GPU.
@@ -415,24 +334,7 @@ public:
 
   // Queries and timers.
   vtkTiledRayCastOcclusionQueries Queries;
-  PhaseTimer PhaseTimers[NumberOfPhases];
-  PhaseTimer TotalTimer;
-  bool TimersPending = false;
-  bool TimingThisFrame = false;
-  void StartPhase(PhaseTimer& t)
-  {
-    if (this->TimingThisFrame)
-    {
-      t.Start();
-    }
-  }
-  void StopPhase(PhaseTimer& t)
-  {
-    if (this->TimingThisFrame)
-    {
-      t.Stop();
-    }
-  }
+  vtkTiledRayCastPhaseTimers Timers;
   unsigned int NearPlaneQuery = 0;
 
   // Warnings given once.
@@ -587,9 +489,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRe
   this->NearPlaneQuery = 0;
   this->MakeTiles();
 
-  this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
+  this->Timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
   this->RenderFirstHit(window);
-  this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
+  this->Timers.Stop(vtkTiledRayCastPhaseTimers::FirstHit);
   // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
   // a peel finds no re-entry.
   int layers = 1;
@@ -597,18 +499,18 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRe
   const int maxLayers = 1 << 16;
   while (true)
   {
-    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
+    this->Timers.Start(vtkTiledRayCastPhaseTimers::RayCasting);
     this->RayCastLayer(window);
-    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
+    this->Timers.Stop(vtkTiledRayCastPhaseTimers::RayCasting);
     if (layers >= maxLayers)
     {
       vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
       vtkWarningWithObjectMacro(self, "Stopped after " << maxLayers << " boundary layers.");
       break;
     }
-    this->StartPhase(this->PhaseTimers[PhasePeeling]);
+    this->Timers.Start(vtkTiledRayCastPhaseTimers::Peeling);
     const unsigned int reentered = this->Peel(window);
-    this->StopPhase(this->PhaseTimers[PhasePeeling]);
+    this->Timers.Stop(vtkTiledRayCastPhaseTimers::Peeling);
     ++peels;
     if (!reentered)
     {
@@ -616,9 +518,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRe
     }
     ++layers;
   }
-  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
+  this->Timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
   this->Composite(window);
-  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
+  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
   this->FinishStatistics();
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   stats->SetNumberOfLayers(layers);
@@ -654,16 +556,16 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
     return false;
   }
   {
-    ScopedDebugEvent event("ListEntries");
-    this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
+    vtkTiledRayCastDebugEvent event("ListEntries");
+    this->Timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
     this->Compute.ListEntries(frame, *this);
-    this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
+    this->Timers.Stop(vtkTiledRayCastPhaseTimers::FirstHit);
   }
   {
-    ScopedDebugEvent event("Traverse");
-    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
+    vtkTiledRayCastDebugEvent event("Traverse");
+    this->Timers.Start(vtkTiledRayCastPhaseTimers::RayCasting);
     this->Compute.Traverse(frame, *this);
-    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
+    this->Timers.Stop(vtkTiledRayCastPhaseTimers::RayCasting);
   }
   const bool ok = this->Compute.FinishEntries(frame, *this, stats, error);
 
@@ -675,13 +577,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
     this->ReportError(error);
     return false;
   }
-  ScopedDebugEvent event("Composite");
-  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
+  vtkTiledRayCastDebugEvent event("Composite");
+  this->Timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
   state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
   state->vtkglEnable(GL_BLEND);
   state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   this->Compute.Composite(frame, *this);
-  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
+  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
 
   stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
   stats->SetNumberOfRayCastPasses(1);
@@ -1638,43 +1540,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
 {
-  if (!this->TimersPending)
+  if (this->Timers.Read(wait, this->Self->Statistics))
   {
-    return;
+    // What AutoAdjustSampleDistances fits the next frames to.
+    this->SampleDistance.Measured(
+      this->TimedSampleDistance, 1e-3 * this->Self->Statistics->GetTotalGPUTime());
   }
-  auto ready = [this]()
-  {
-    for (const PhaseTimer& t : this->PhaseTimers)
-    {
-      if (!t.Ready())
-      {
-        return false;
-      }
-    }
-    return this->TotalTimer.Ready();
-  };
-  if (wait)
-  {
-    // vtkOpenGLRenderTimer only polls: finish the frame's work, then poll until the results
-    // have arrived.
-    glFinish();
-    while (!ready())
-    {
-    }
-  }
-  else if (!ready())
-  {
-    return;
-  }
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetFirstHitTime(this->PhaseTimers[PhaseFirstHit].GetMilliseconds());
-  stats->SetPeelingTime(this->PhaseTimers[PhasePeeling].GetMilliseconds());
-  stats->SetRayCastingTime(this->PhaseTimers[PhaseRayCasting].GetMilliseconds());
-  stats->SetCompositingTime(this->PhaseTimers[PhaseCompositing].GetMilliseconds());
-  stats->SetTotalGPUTime(this->TotalTimer.GetMilliseconds());
-  this->TimersPending = false;
-  // What AutoAdjustSampleDistances fits the next frames to.
-  this->SampleDistance.Measured(this->TimedSampleDistance, 1e-3 * stats->GetTotalGPUTime());
 }
 
 //------------------------------------------------------------------------------
@@ -1927,7 +1798,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(vtkOpenGLState
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRenderWindow* window)
 {
-  ScopedDebugEvent event("FirstHit");
+  vtkTiledRayCastDebugEvent event("FirstHit");
   vtkOpenGLState* state = window->GetState();
 
   // Both target sets start as "no ray" (all zero), so that a tile the GPU skips because it has
@@ -1975,7 +1846,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRe
 //------------------------------------------------------------------------------
 unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRenderWindow* window)
 {
-  ScopedDebugEvent event("Peel");
+  vtkTiledRayCastDebugEvent event("Peel");
   vtkOpenGLState* state = window->GetState();
 
   // The peel reads set 0 and writes set 1 where a ray re-enters: make both sets hold the same
@@ -2074,7 +1945,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CountActiveRays(
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRenderWindow* window)
 {
-  ScopedDebugEvent event("RayCastLayer");
+  vtkTiledRayCastDebugEvent event("RayCastLayer");
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   vtkTiledRayCastStatistics* stats = self->Statistics;
@@ -2195,7 +2066,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRend
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderWindow* window)
 {
-  ScopedDebugEvent event("Composite");
+  vtkTiledRayCastDebugEvent event("Composite");
   vtkOpenGLState* state = window->GetState();
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
 
@@ -2308,12 +2179,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
     p->Release(window);
   }
   this->Queries.ReleaseGraphicsResources();
-  for (PhaseTimer& t : this->PhaseTimers)
-  {
-    t.ReleaseGraphicsResources();
-  }
-  this->TotalTimer.ReleaseGraphicsResources();
-  this->TimersPending = false;
+  this->Timers.ReleaseGraphicsResources();
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->UploadedLayoutTime = 0;
@@ -2409,7 +2275,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The tiled ray-cast mapper needs an OpenGL render window.");
     return;
   }
-  ScopedDebugEvent event("Render");
+  vtkTiledRayCastDebugEvent event("Render");
   this->ResourceCallback->RegisterGraphicsResources(window);
   if (!impl->CheckContext(window))
   {
@@ -2550,18 +2416,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // GPU timers of the previous frame still in flight are not restarted: this frame is then not
   // timed, and the statistics keep the latest times measured.
-  const bool timing = !impl->TimersPending;
-  impl->TimingThisFrame = timing;
-  if (timing)
+  if (impl->Timers.BeginFrame())
   {
-    impl->TotalTimer.Reset();
-    for (PhaseTimer& t : impl->PhaseTimers)
-    {
-      t.Reset();
-    }
     impl->TimedSampleDistance = impl->FrameSampleDistance;
   }
-  impl->StartPhase(impl->TotalTimer);
+  impl->Timers.Start(vtkTiledRayCastPhaseTimers::Total);
   // The opaque geometry drawn so far ends the rays.
   if (!impl->CaptureOpaqueDepth(window, width, height))
   {
@@ -2576,8 +2435,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetPipeline(impl->UseCompute ? "Compute" : "Fragment");
   const bool ok = impl->UseCompute ? impl->RenderCompute(window) : impl->RenderFragment(window);
-  impl->StopPhase(impl->TotalTimer);
-  impl->TimersPending = timing;
+  impl->Timers.Stop(vtkTiledRayCastPhaseTimers::Total);
+  impl->Timers.EndFrame();
   state->vtkglCullFace(cullFaceMode);
   impl->ActivateTextures(false);
   if (!ok)
