@@ -48,12 +48,12 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastDebugEvent.h"
+#include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastIntegrationChoice.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
-#include "vtkTiledRayCastOcclusionQueries.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -70,26 +70,15 @@
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include "vtkTiledRayCastBoundaryFaceFS.h"
-#include "vtkTiledRayCastBoundaryFaceVS.h"
 #include "vtkTiledRayCastCommonFS.h"
 #include "vtkTiledRayCastCompactLayout.h"
-#include "vtkTiledRayCastCompositeFS.h"
-#include "vtkTiledRayCastCopyFS.h"
-#include "vtkTiledRayCastCountFS.h"
 #include "vtkTiledRayCastGradientOpacity.h"
-#include "vtkTiledRayCastNearSliceFS.h"
-#include "vtkTiledRayCastNearSliceGS.h"
-#include "vtkTiledRayCastNearSliceVS.h"
 #include "vtkTiledRayCastPaperLayout.h"
 #include "vtkTiledRayCastBlendModes.h"
 #include "vtkTiledRayCastPartialPreIntegration.h"
 #include "vtkTiledRayCastPreIntegration2D.h"
 #include "vtkTiledRayCastPreIntegration3D.h"
-#include "vtkTiledRayCastQuadVS.h"
 #include "vtkTiledRayCastShading.h"
-#include "vtkTiledRayCastTraversalFS.h"
-#include "vtkTiledRayCastWalk.h"
 
 #include <algorithm>
 #include <array>
@@ -139,50 +128,9 @@ const char* FragmentPipelineVersion(vtkOpenGLRenderWindow* window)
   return nullptr;
 }
 
-// Ray status codes, as in vtkTiledRayCastCommonFS.glsl.
-enum RayStatus
-{
-  StatusMiss = 0,
-  StatusActive = 1,
-  StatusWaiting = 2,
-  StatusDoneDepth = 3,
-  StatusDoneOpaque = 4
-};
-
-// The depth at which tile rectangles are drawn: halfway, so that the early-z marks of the
-// Z-update pass (0 for finished rays, 1 for active ones) cull or pass them.
-const float RectangleDepth = 0.0f; // NDC, window depth 0.5
-
 // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
 // place: the next layer must then have a larger key than the last (both pipelines' peeling).
 const float PeelEpsilon = 2e-6f;
-
-// A screen tile, in pixels of the viewport.
-struct Tile
-{
-  int X0, Y0, X1, Y1;
-  int Parity = 0;                 // which of the two ping-pong target sets holds its latest state
-  int Passes = 0;                 // ray-casting passes run this frame
-  bool Running = false;           // still has rays to advance in the current layer
-  unsigned int LastQuery = 0;     // latest count of the tile's active rays
-  unsigned int PreviousQuery = 0; // the count before it
-};
-
-// A program of the window's shader cache (the cache owns it) and the empty vertex array every
-// draw of the mapper binds: vertices are generated from gl_VertexID.
-struct Program
-{
-  vtkShaderProgram* Shader = nullptr;
-  vtkNew<vtkOpenGLVertexArrayObject> VAO;
-  std::string Key;
-
-  void Release(vtkWindow*)
-  {
-    this->Shader = nullptr;
-    this->VAO->ReleaseGraphicsResources();
-    this->Key.clear();
-  }
-};
 
 // A mesh array on the GPU.
 struct MeshTexture
@@ -194,15 +142,21 @@ struct MeshTexture
   vtkIdType Bytes = 0;
 };
 
-std::string Substituted(
-  std::string source, const std::vector<std::pair<std::string, std::string>>& replacements)
+void ActivateAll(const std::vector<vtkTextureObject*>& textures, bool activate)
 {
-  for (const auto& r : replacements)
+  for (vtkTextureObject* t : textures)
   {
-    vtkShaderProgram::Substitute(source, r.first, r.second, true);
+    if (activate)
+    {
+      t->Activate();
+    }
+    else
+    {
+      t->Deactivate();
+    }
   }
-  return source;
 }
+
 // The longest edge of any tetrahedron: the longest segment a ray can have inside one.
 double ComputeLongestEdge(vtkTetMesh* mesh)
 {
@@ -270,9 +224,10 @@ public:
   int Max3DTextureSize = 0;
   bool ComputeSupported = false; // OpenGL 4.3
 
-  // The pipeline of this frame: compute (vtkTiledRayCastComputePipeline) or fragment (below).
+  // The pipeline of this frame: compute or fragment.
   bool UseCompute = false;
   vtkTiledRayCastComputePipeline Compute;
+  vtkTiledRayCastFragmentPipeline Fragment;
 
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
@@ -310,32 +265,17 @@ public:
   int UploadedTableMode = -1;
   vtkIdType TransferFunctionBytes = 0;
 
-  // Render targets: two ping-pong sets of (state, colour, entry) and a shared depth buffer.
-  vtkNew<vtkTextureObject> State[2];
-  vtkNew<vtkTextureObject> Color[2];
-  vtkNew<vtkTextureObject> Entry[2];
-  vtkNew<vtkTextureObject> Depth;
   vtkNew<vtkTextureObject> OpaqueDepth;
   vtkNew<vtkOpenGLFramebufferObject> OpaqueDepthFramebuffer;
   unsigned int OpaqueDepthFormat = 0;
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer[2];
-  // The targets only grow: renderers of different sizes in one window share them, each using
-  // the lower-left ImageSize pixels, and nothing is reallocated from one renderer to the next.
-  int TargetSize[2] = { 0, 0 };
   // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
   int ImageSize[2] = { 0, 0 };
   vtkTiledRayCastSampleDistance SampleDistance;
   double FrameSampleDistance = 1.0;
   double TimedSampleDistance = 1.0; // of the frame the timers in flight measure
 
-  // Programs.
-  Program FirstHitProgram, PeelProgram, NearSliceProgram, TraversalProgram, CopyProgram,
-    CountProgram, CompositeProgram;
-
-  // Queries and timers.
-  vtkTiledRayCastOcclusionQueries Queries;
+  // GPU timers.
   vtkTiledRayCastPhaseTimers Timers;
-  unsigned int NearPlaneQuery = 0;
 
   // Warnings given once.
   bool WarnedTranslucentGeometry = false;
@@ -358,16 +298,6 @@ public:
   vtkTiledRayCastFrameGeometry Geometry;
   vtkTiledRayCastLighting Lighting;
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
-  std::vector<Tile> Tiles;
-  // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
-  // them when that count was zero.
-  struct PassBlock
-  {
-    size_t TileIndex;
-    unsigned int Condition;
-    int Passes;
-  };
-  std::vector<PassBlock> PassBlocks;
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
@@ -410,11 +340,9 @@ public:
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
   bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
-  void MakeTiles();
   void ReadTimers(bool wait);
 
   void ActivateTextures(bool activate);
-  vtkShaderProgram* Use(vtkOpenGLRenderWindow* window, Program& program);
   bool ChoosePipeline();
   void SetFrameUniforms(vtkShaderProgram* program) override;
   void SetMeshUniforms(vtkShaderProgram* program) override;
@@ -432,24 +360,10 @@ public:
   // has pushed the framebuffer bindings; both pop them before compositing).
   bool RenderCompute(vtkOpenGLRenderWindow* window);
   bool RenderFragment(vtkOpenGLRenderWindow* window);
-  void SetTargetUniforms(vtkShaderProgram* program, int parity);
   // Compositing: rays per viewport pixel along x and y (1 at an image sample distance of 1).
   void SetSampleScaleUniforms(vtkShaderProgram* program) override;
-  void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
-  void DrawViewport(Program& program);
-
-  void BindTargets(vtkOpenGLState* state, int parity);
-  bool RenderFirstHit(vtkOpenGLRenderWindow* window);
-  unsigned int Peel(vtkOpenGLRenderWindow* window);
-  void RayCastLayer(vtkOpenGLRenderWindow* window);
-  void CountActiveRays(vtkOpenGLRenderWindow* window, Tile& tile);
-  void CopyTile(vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive);
-  void MakeTilesIdentical(vtkOpenGLRenderWindow* window);
-  void Composite(vtkOpenGLRenderWindow* window);
-  void FinishStatistics();
 
   void ReleaseGraphicsResources(vtkWindow* window);
-  void ReleaseFragmentTargets(vtkWindow* window);
   void ClearMeshTextures();
 };
 
@@ -470,7 +384,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
     // The other pipeline's per-pixel memory is no longer needed.
     if (compute)
     {
-      this->ReleaseFragmentTargets(this->CheckedWindow);
+      this->Fragment.ReleaseTargets(this->CheckedWindow);
     }
     else
     {
@@ -484,47 +398,24 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRenderWindow* window)
 {
-  this->Queries.Recycle();
-  this->PassBlocks.clear();
-  this->NearPlaneQuery = 0;
-  this->MakeTiles();
-
-  this->Timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
-  this->RenderFirstHit(window);
-  this->Timers.Stop(vtkTiledRayCastPhaseTimers::FirstHit);
-  // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
-  // a peel finds no re-entry.
-  int layers = 1;
-  int peels = 0;
-  const int maxLayers = 1 << 16;
-  while (true)
-  {
-    this->Timers.Start(vtkTiledRayCastPhaseTimers::RayCasting);
-    this->RayCastLayer(window);
-    this->Timers.Stop(vtkTiledRayCastPhaseTimers::RayCasting);
-    if (layers >= maxLayers)
-    {
-      vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-      vtkWarningWithObjectMacro(self, "Stopped after " << maxLayers << " boundary layers.");
-      break;
-    }
-    this->Timers.Start(vtkTiledRayCastPhaseTimers::Peeling);
-    const unsigned int reentered = this->Peel(window);
-    this->Timers.Stop(vtkTiledRayCastPhaseTimers::Peeling);
-    ++peels;
-    if (!reentered)
-    {
-      break;
-    }
-    ++layers;
-  }
-  this->Timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
-  this->Composite(window);
-  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
-  this->FinishStatistics();
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetNumberOfLayers(layers);
-  stats->SetNumberOfPeelPasses(peels);
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastFragmentPipeline::Frame frame;
+  frame.Window = window;
+  frame.Reporter = self;
+  frame.Width = this->ImageSize[0];
+  frame.Height = this->ImageSize[1];
+  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
+  frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
+  frame.NumberOfTetrahedra = this->NumberOfTets;
+  frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
+  frame.Mirrored = this->Geometry.Mirrored;
+  frame.MaximumSteps = this->GetMaximumSteps();
+  frame.PeelEpsilon = PeelEpsilon;
+  frame.TileSize = self->GetTileSize();
+  frame.TetsPerPass = self->GetTetsPerPass();
+  frame.OcclusionQueryInterval = self->GetOcclusionQueryInterval();
+  frame.MaximumPassesPerLayer = self->GetMaximumNumberOfPassesPerLayer();
+  this->Fragment.Render(frame, *this, this->Timers, self->Statistics);
   return true;
 }
 
@@ -1226,75 +1117,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
     }
     return true;
   }
-  common.insert(common.begin(), { "//TRC::Version", this->VersionHeader });
-  common.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
-  const std::string peelDec = "uniform sampler2D in_previousState;\n"
-                              "uniform sampler2D in_previousColor;\n"
-                              "uniform sampler2D in_previousEntry;\n"
-                              "uniform float in_peelEpsilon;\n";
-  // Most fragments of a peel belong to pixels whose ray is not waiting: they leave first.
-  const std::string peelEarly = "ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
-                                "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
-                                "  if (trcStatus(previous) != TRC_WAITING)\n"
-                                "  {\n    discard;\n  }\n";
-  const std::string peelImpl =
-    "if (lambda < previous.y - in_peelEpsilon)\n"
-    "  {\n    discard;\n  }\n"
-    "  vec4 lastEntry = texelFetch(in_previousEntry, pixel, 0);\n"
-    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= trcEntryKey(lastEntry))\n"
-    "  {\n    discard;\n  }\n"
-    "  lambda = max(lambda, previous.y);\n"
-    "  color = texelFetch(in_previousColor, pixel, 0);\n";
-
-  struct Spec
+  std::string error;
+  if (!this->Fragment.UpdatePrograms(window, this->VersionHeader, common, error))
   {
-    Program* Target;
-    const char* VS;
-    const char* GS;
-    const char* FS;
-    bool Peel;
-  };
-  const Spec specs[] = {
-    { &this->FirstHitProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
-      false },
-    { &this->PeelProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
-      true },
-    { &this->NearSliceProgram, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
-      vtkTiledRayCastNearSliceFS, false },
-    { &this->TraversalProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
-    { &this->CopyProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCopyFS, false },
-    { &this->CountProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCountFS, false },
-    { &this->CompositeProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCompositeFS, false },
-  };
-  for (const Spec& spec : specs)
-  {
-    std::vector<std::pair<std::string, std::string>> replacements = common;
-    replacements.emplace_back("//TRC::Peel::Dec", spec.Peel ? peelDec : std::string());
-    replacements.emplace_back("//TRC::Peel::Early", spec.Peel ? peelEarly : std::string());
-    replacements.emplace_back("//TRC::Peel::Impl", spec.Peel ? peelImpl : std::string());
-    const std::string vs = Substituted(spec.VS, replacements);
-    const std::string fs = Substituted(spec.FS, replacements);
-    const std::string gs = spec.GS ? Substituted(spec.GS, replacements) : std::string();
-    const std::string key = vs + fs + gs;
-    if (key == spec.Target->Key && spec.Target->Shader)
-    {
-      continue;
-    }
-    vtkShaderProgram* shader =
-      window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    if (!shader || !shader->GetCompiled())
-    {
-      this->ReportError("A shader of the tiled ray caster failed to compile or link; see the "
-                        "shader log above. Nothing is drawn.");
-      spec.Target->Shader = nullptr;
-      return false;
-    }
-    if (shader != spec.Target->Shader)
-    {
-      spec.Target->Shader = shader;
-      spec.Target->VAO->ShaderProgramChanged();
-    }
-    spec.Target->Key = key;
+    this->ReportError(error);
+    return false;
   }
   return true;
 }
@@ -1315,79 +1142,12 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
     }
     return true;
   }
-  if (width <= this->TargetSize[0] && height <= this->TargetSize[1] &&
-    this->Framebuffer[0]->GetFBOIndex() != 0)
+  std::string error;
+  if (!this->Fragment.UpdateTargets(window, width, height, error))
   {
-    return true;
-  }
-  width = std::max(width, this->TargetSize[0]);
-  height = std::max(height, this->TargetSize[1]);
-  vtkOpenGLState* ostate = window->GetState();
-  auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps)
-  {
-    tex->SetContext(window);
-    tex->SetInternalFormat(internal);
-    tex->SetFormat(format);
-    tex->SetDataType(GL_FLOAT);
-    tex->SetMinificationFilter(vtkTextureObject::Nearest);
-    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-    tex->SetWrapS(vtkTextureObject::ClampToEdge);
-    tex->SetWrapT(vtkTextureObject::ClampToEdge);
-    if (tex->GetHandle() && tex->GetWidth() > 0)
-    {
-      tex->Resize(width, height);
-      return true;
-    }
-    return tex->Allocate2D(width, height, comps, VTK_FLOAT);
-  };
-  bool ok = true;
-  for (int q = 0; q < 2; ++q)
-  {
-    ok = ok && setup(this->State[q], GL_RGBA32F, GL_RGBA, 4);
-    ok = ok && setup(this->Color[q], GL_RGBA32F, GL_RGBA, 4);
-    ok = ok && setup(this->Entry[q], GL_RGBA32F, GL_RGBA, 4);
-  }
-  vtkTextureObject* depth = this->Depth;
-  depth->SetContext(window);
-  depth->SetMinificationFilter(vtkTextureObject::Nearest);
-  depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-  if (depth->GetHandle() && depth->GetWidth() > 0)
-  {
-    depth->Resize(width, height);
-  }
-  else
-  {
-    ok = ok && depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-  }
-  if (!ok)
-  {
-    this->ReportError("Cannot allocate the ray-casting render targets. Nothing is drawn.");
+    this->ReportError(error);
     return false;
   }
-  ostate->PushFramebufferBindings();
-  for (int q = 0; q < 2; ++q)
-  {
-    vtkOpenGLFramebufferObject* fbo = this->Framebuffer[q];
-    fbo->SetContext(window);
-    fbo->Bind();
-    fbo->AddColorAttachment(0, this->State[q]);
-    fbo->AddColorAttachment(1, this->Color[q]);
-    fbo->AddColorAttachment(2, this->Entry[q]);
-    fbo->AddDepthAttachment(this->Depth);
-    fbo->ActivateDrawBuffers(3);
-    if (!fbo->CheckFrameBufferStatus(GL_FRAMEBUFFER))
-    {
-      ok = false;
-    }
-  }
-  ostate->PopFramebufferBindings();
-  if (!ok)
-  {
-    this->ReportError("The ray-casting framebuffer is incomplete on this GPU. Nothing is drawn.");
-    return false;
-  }
-  this->TargetSize[0] = width;
-  this->TargetSize[1] = height;
   return true;
 }
 
@@ -1517,27 +1277,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
-{
-  const int w = this->ImageSize[0];
-  const int h = this->ImageSize[1];
-  const int size = this->Self->GetTileSize() > 0 ? this->Self->GetTileSize() : std::max(w, h);
-  this->Tiles.clear();
-  for (int y = 0; y < h; y += size)
-  {
-    for (int x = 0; x < w; x += size)
-    {
-      Tile t;
-      t.X0 = x;
-      t.Y0 = y;
-      t.X1 = std::min(x + size, w);
-      t.Y1 = std::min(y + size, h);
-      this->Tiles.push_back(t);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
 {
   if (this->Timers.Read(wait, this->Self->Statistics))
@@ -1563,12 +1302,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   }
   else
   {
-    for (int q = 0; q < 2; ++q)
-    {
-      textures.push_back(this->State[q]);
-      textures.push_back(this->Color[q]);
-      textures.push_back(this->Entry[q]);
-    }
+    // The fragment pipeline's targets take the units after these.
+    ActivateAll(textures, activate);
+    textures.clear();
+    this->Fragment.ActivateTextures(activate);
   }
   const int mode = this->IntegrationMode();
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
@@ -1580,17 +1317,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   {
     textures.push_back(this->TableTexture);
   }
-  for (vtkTextureObject* t : textures)
-  {
-    if (activate)
-    {
-      t->Activate();
-    }
-    else
-    {
-      t->Deactivate();
-    }
-  }
+  ActivateAll(textures, activate);
   this->VisibleMesh.ActivateTextures(activate);
 }
 
@@ -1752,406 +1479,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetSampleScaleUniforms(vtk
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetTargetUniforms(
-  vtkShaderProgram* p, int parity)
-{
-  p->SetUniformi("in_state", this->State[parity]->GetTextureUnit());
-  p->SetUniformi("in_color", this->Color[parity]->GetTextureUnit());
-  p->SetUniformi("in_entry", this->Entry[parity]->GetTextureUnit());
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
-  Program& program, int x0, int y0, int x1, int y1)
-{
-  const float w = static_cast<float>(this->ImageSize[0]);
-  const float h = static_cast<float>(this->ImageSize[1]);
-  const float rect[4] = { 2.0f * x0 / w - 1.0f, 2.0f * y0 / h - 1.0f, 2.0f * x1 / w - 1.0f,
-    2.0f * y1 / h - 1.0f };
-  program.Shader->SetUniform4f("in_rectangle", rect);
-  program.Shader->SetUniformf("in_rectangleDepth", RectangleDepth);
-  // A screen rectangle is never culled: the boundary passes cull by the volume's handedness,
-  // front faces (counter-clockwise, like the rectangle) when its matrix mirrors.
-  this->CheckedWindow->GetState()->vtkglDisable(GL_CULL_FACE);
-  program.VAO->Bind();
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawViewport(Program& program)
-{
-  this->DrawRectangle(program, 0, 0, this->ImageSize[0], this->ImageSize[1]);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(vtkOpenGLState*, int parity)
-{
-  // Every pass writes all three targets (state, colour, entry). VTK 9.1's state cache keeps one
-  // set of draw buffers for all framebuffers, so after switching framebuffers it may believe
-  // ours are already set when they are not: going through "none" forces the real call.
-  vtkOpenGLFramebufferObject* fbo = this->Framebuffer[parity];
-  fbo->Bind(GL_DRAW_FRAMEBUFFER);
-  fbo->DeactivateDrawBuffers();
-  fbo->ActivateDrawBuffers(3);
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRenderWindow* window)
-{
-  vtkTiledRayCastDebugEvent event("FirstHit");
-  vtkOpenGLState* state = window->GetState();
-
-  // Both target sets start as "no ray" (all zero), so that a tile the GPU skips because it has
-  // no ray is the same in both, whatever its parity.
-  state->vtkglClearColor(0.f, 0.f, 0.f, 0.f);
-  state->vtkglClearDepth(1.0);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  for (int q = 1; q >= 0; --q)
-  {
-    this->BindTargets(state, q);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  }
-  this->BindTargets(state, 0);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-
-  if (this->Geometry.NearPlaneCutsMesh)
-  {
-    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
-    state->vtkglDisable(GL_CULL_FACE);
-    this->SetFrameUniforms(this->Use(window, this->NearSliceProgram));
-    this->SetMeshUniforms(this->NearSliceProgram.Shader);
-    this->NearSliceProgram.VAO->Bind();
-    this->NearPlaneQuery = this->Queries.Begin();
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->NumberOfTets));
-    this->Queries.End();
-  }
-
-  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  this->SetFrameUniforms(this->Use(window, this->FirstHitProgram));
-  this->SetMeshUniforms(this->FirstHitProgram.Shader);
-  this->SetCoverageUniforms(this->FirstHitProgram.Shader);
-  this->FirstHitProgram.VAO->Bind();
-  // Faces are not clipped at the near plane: their fragment shader decides there.
-  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
-  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  vtkInternalsCheckErrorMacro("failed after the first-hit pass");
-  return true;
-}
-
-//------------------------------------------------------------------------------
-unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRenderWindow* window)
-{
-  vtkTiledRayCastDebugEvent event("Peel");
-  vtkOpenGLState* state = window->GetState();
-
-  // The peel reads set 0 and writes set 1 where a ray re-enters: make both sets hold the same
-  // state first (per tile, from whichever set is current).
-  this->MakeTilesIdentical(window);
-
-  this->BindTargets(state, 1);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  vtkShaderProgram* p = this->Use(window, this->PeelProgram);
-  this->SetFrameUniforms(p);
-  this->SetMeshUniforms(p);
-  this->SetCoverageUniforms(p);
-  p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
-  p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
-  p->SetUniformi("in_previousColor", this->Color[0]->GetTextureUnit());
-  p->SetUniformf("in_peelEpsilon", PeelEpsilon);
-  this->PeelProgram.VAO->Bind();
-  const unsigned int query = this->Queries.Begin();
-  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
-  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  this->Queries.End();
-  // Whether another layer exists decides what to draw next: this read waits for the GPU, once
-  // per layer (as VTK's dual depth peeling does).
-  const unsigned int reentered = this->Queries.GetResult(query);
-  for (Tile& tile : this->Tiles)
-  {
-    tile.Parity = 1;
-  }
-  vtkInternalsCheckErrorMacro("failed after a peeling pass");
-  return reentered;
-}
-
-//------------------------------------------------------------------------------
-vtkShaderProgram* vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Use(
-  vtkOpenGLRenderWindow* window, Program& program)
-{
-  window->GetShaderCache()->ReadyShaderProgram(program.Shader);
-  return program.Shader;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CopyTile(
-  vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive)
-{
-  // Copies the tile's current set to the other set and flips its parity. As a Z-update it also
-  // writes depth 0 for rays that are no longer active (later passes skip them) and 1 for the
-  // others; the caller sets the depth test.
-  vtkShaderProgram* copy = this->Use(window, this->CopyProgram);
-  this->BindTargets(window->GetState(), 1 - tile.Parity);
-  this->SetTargetUniforms(copy, tile.Parity);
-  copy->SetUniformi("in_markInactive", markInactive ? 1 : 0);
-  this->DrawRectangle(this->CopyProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-  tile.Parity = 1 - tile.Parity;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTilesIdentical(
-  vtkOpenGLRenderWindow* window)
-{
-  // After a copy from the current set to the other, both sets hold the same state.
-  vtkOpenGLState* state = window->GetState();
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  for (Tile& tile : this->Tiles)
-  {
-    this->CopyTile(window, tile, false);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CountActiveRays(
-  vtkOpenGLRenderWindow* window, Tile& tile)
-{
-  vtkOpenGLState* state = window->GetState();
-  vtkShaderProgram* count = this->Use(window, this->CountProgram);
-  count->SetUniformi("in_statusMask", 1 << StatusActive);
-  this->SetTargetUniforms(count, tile.Parity);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  tile.LastQuery = this->Queries.Begin();
-  this->DrawRectangle(this->CountProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-  this->Queries.End();
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetNumberOfOcclusionQueries(stats->GetNumberOfOcclusionQueries() + 1);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRenderWindow* window)
-{
-  vtkTiledRayCastDebugEvent event("RayCastLayer");
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastStatistics* stats = self->Statistics;
-  const int tetsPerPass = self->GetTetsPerPass();
-  const int interval = self->GetOcclusionQueryInterval();
-  const int maxPasses = self->GetMaximumNumberOfPassesPerLayer();
-
-  // No ray of this layer is marked finished yet.
-  this->BindTargets(state, 0);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-
-  // Count the active rays of every tile. The GPU skips the passes of a tile whose count is zero
-  // (conditional rendering), and the CPU never waits for these counts.
-  for (Tile& tile : this->Tiles)
-  {
-    tile.PreviousQuery = 0;
-    this->CountActiveRays(window, tile);
-    tile.Running = true;
-  }
-
-  vtkShaderProgram* traversal = this->Use(window, this->TraversalProgram);
-  this->SetFrameUniforms(traversal);
-  this->SetMeshUniforms(traversal);
-  this->SetIntegrationUniforms(traversal);
-  traversal->SetUniformi("in_tetsPerPass", tetsPerPass);
-  traversal->SetUniformi("in_maximumSteps", this->GetMaximumSteps());
-
-  if (tetsPerPass == 0)
-  {
-    // No limit on tets per pass: one pass per tile finishes every ray of the layer.
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_FALSE);
-    for (size_t i = 0; i < this->Tiles.size(); ++i)
-    {
-      Tile& tile = this->Tiles[i];
-      this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->BindTargets(state, 1 - tile.Parity);
-      this->SetTargetUniforms(traversal, tile.Parity);
-      this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-      this->Queries.EndConditionalRender();
-      tile.Parity = 1 - tile.Parity;
-      this->PassBlocks.push_back({ i, tile.LastQuery, 1 });
-    }
-    return;
-  }
-
-  // The paper's scheme: rounds of k passes per running tile, each ending with a Z-update (the
-  // rays no longer active are marked in the depth buffer, so later passes skip them) and an
-  // occlusion query counting the tile's active rays. A tile stops once a count of zero comes
-  // back. Counts are polled without waiting; the passes issued meanwhile for a tile that is in
-  // fact done are skipped by the GPU, which also leaves both of its target sets identical.
-  bool anyRunning = true;
-  while (anyRunning)
-  {
-    anyRunning = false;
-    for (size_t i = 0; i < this->Tiles.size(); ++i)
-    {
-      Tile& tile = this->Tiles[i];
-      if (!tile.Running)
-      {
-        continue;
-      }
-      // Stop once a count of zero is known. The latest count is polled; if it is not there yet,
-      // the one of the round before (issued a whole round of other tiles ago) is waited for, so
-      // at most one round is issued that the GPU may skip.
-      if (this->Queries.IsAvailable(tile.LastQuery))
-      {
-        if (this->Queries.GetResult(tile.LastQuery) == 0)
-        {
-          tile.Running = false;
-          continue;
-        }
-      }
-      else if (tile.PreviousQuery && this->Queries.GetResult(tile.PreviousQuery) == 0)
-      {
-        tile.Running = false;
-        continue;
-      }
-      if (tile.Passes >= maxPasses)
-      {
-        vtkWarningWithObjectMacro(self, << "A tile reached " << maxPasses
-                                        << " ray-casting passes in one layer and was stopped; "
-                                           "the mesh's neighbour links may loop.");
-        tile.Running = false;
-        continue;
-      }
-      anyRunning = true;
-      this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->Use(window, this->TraversalProgram);
-      state->vtkglEnable(GL_DEPTH_TEST);
-      state->vtkglDepthFunc(GL_LESS);
-      state->vtkglDepthMask(GL_FALSE);
-      for (int k = 0; k < interval; ++k)
-      {
-        this->BindTargets(state, 1 - tile.Parity);
-        this->SetTargetUniforms(traversal, tile.Parity);
-        this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-        tile.Parity = 1 - tile.Parity;
-      }
-      // The Z-update writes its own depth (0 or 1) for every pixel: it must not be depth-tested
-      // against the last one, or active rays (1 against 1) would not be copied and the next
-      // round would start from a stale set (a lost pass per round, no progress at all for K=1).
-      state->vtkglDepthFunc(GL_ALWAYS);
-      state->vtkglDepthMask(GL_TRUE);
-      this->CopyTile(window, tile, true);
-      this->Queries.EndConditionalRender();
-      this->PassBlocks.push_back({ i, tile.LastQuery, interval });
-      stats->SetNumberOfZUpdatePasses(stats->GetNumberOfZUpdatePasses() + 1);
-      tile.Passes += interval;
-      tile.PreviousQuery = tile.LastQuery;
-      this->CountActiveRays(window, tile);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderWindow* window)
-{
-  vtkTiledRayCastDebugEvent event("Composite");
-  vtkOpenGLState* state = window->GetState();
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-
-  // Bring every tile to set 0, then count the rays that became opaque.
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  for (Tile& tile : this->Tiles)
-  {
-    if (tile.Parity == 1)
-    {
-      this->CopyTile(window, tile, false);
-    }
-  }
-  vtkShaderProgram* count = this->Use(window, this->CountProgram);
-  count->SetUniformi("in_statusMask", 1 << StatusDoneOpaque);
-  this->SetTargetUniforms(count, 0);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  const unsigned int opaqueQuery = this->Queries.Begin();
-  this->DrawViewport(this->CountProgram);
-  this->Queries.End();
-  // And the rays that entered the mesh, counted here rather than while compositing: the
-  // caller's framebuffer may be multisampled, ours counts pixels.
-  count->SetUniformi("in_statusMask", ~(1 << StatusMiss));
-  const unsigned int raysQuery = this->Queries.Begin();
-  this->DrawViewport(this->CountProgram);
-  this->Queries.End();
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
-  state->PopFramebufferBindings();
-  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  vtkShaderProgram* composite = this->Use(window, this->CompositeProgram);
-  this->SetTargetUniforms(composite, 0);
-  const float origin[2] = { static_cast<float>(this->Viewport[0]),
-    static_cast<float>(this->Viewport[1]) };
-  composite->SetUniform2f("in_viewportOrigin", origin);
-  this->SetSampleScaleUniforms(composite);
-  this->DrawViewport(this->CompositeProgram);
-
-  stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
-  stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
-  vtkInternalsCheckErrorMacro("failed after compositing");
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishStatistics()
-{
-  // Passes the GPU really ran: those whose tile count was not zero (all these queries are
-  // answered by now, the last peel having waited for the GPU).
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  std::vector<int> passes(this->Tiles.size(), 0);
-  vtkIdType total = 0;
-  for (const PassBlock& block : this->PassBlocks)
-  {
-    if (this->Queries.GetResult(block.Condition) > 0)
-    {
-      passes[block.TileIndex] += block.Passes;
-      total += block.Passes;
-    }
-  }
-  std::vector<int>& perTile = stats->GetPassesPerTile();
-  perTile.clear();
-  int skipped = 0;
-  for (int p : passes)
-  {
-    if (p > 0)
-    {
-      perTile.push_back(p);
-    }
-    else
-    {
-      ++skipped;
-    }
-  }
-  stats->FinishTilePasses();
-  stats->SetNumberOfRayCastPasses(total);
-  stats->SetNumberOfNearPlaneRays(
-    this->NearPlaneQuery ? this->Queries.GetResult(this->NearPlaneQuery) : 0);
-  stats->SetNumberOfTiles(static_cast<int>(this->Tiles.size()));
-  stats->SetNumberOfTilesSkipped(skipped);
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Compute.ReleaseGraphicsResources(window);
@@ -2161,26 +1488,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->NodeBuffer->ReleaseGraphicsResources();
   this->PsiTexture->ReleaseGraphicsResources(window);
   this->TableTexture->ReleaseGraphicsResources(window);
-  for (int q = 0; q < 2; ++q)
-  {
-    this->State[q]->ReleaseGraphicsResources(window);
-    this->Color[q]->ReleaseGraphicsResources(window);
-    this->Entry[q]->ReleaseGraphicsResources(window);
-    this->Framebuffer[q]->ReleaseGraphicsResources(window);
-  }
+  this->Fragment.ReleaseGraphicsResources(window);
   this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
-  this->Depth->ReleaseGraphicsResources(window);
   this->OpaqueDepth->ReleaseGraphicsResources(window);
   this->UseCompute = false;
-  for (Program* p :
-    { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram, &this->TraversalProgram,
-      &this->CopyProgram, &this->CountProgram, &this->CompositeProgram })
-  {
-    p->Release(window);
-  }
-  this->Queries.ReleaseGraphicsResources();
   this->Timers.ReleaseGraphicsResources();
-  this->TargetSize[0] = this->TargetSize[1] = 0;
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->UploadedLayoutTime = 0;
   this->UploadedNodesTime = 0;
@@ -2189,20 +1501,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->MeshBytes = 0;
   this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseFragmentTargets(vtkWindow* window)
-{
-  for (int q = 0; q < 2; ++q)
-  {
-    this->State[q]->ReleaseGraphicsResources(window);
-    this->Color[q]->ReleaseGraphicsResources(window);
-    this->Entry[q]->ReleaseGraphicsResources(window);
-    this->Framebuffer[q]->ReleaseGraphicsResources(window);
-  }
-  this->Depth->ReleaseGraphicsResources(window);
-  this->TargetSize[0] = this->TargetSize[1] = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -2469,11 +1767,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                        "did not hold them. The list has grown to fit; turn "
                        "SynchronousStatistics on to verify every frame.");
   }
-  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or two sets of state,
-  // colour and entry (16 B each) and two depth buffers.
+  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or the fragment
+  // pipeline's.
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  this->FinishRender(
-    impl->UseCompute ? impl->Compute.GetTargetBytes() + 4 * pixels : (2 * 48 + 8) * pixels);
+  this->FinishRender(impl->UseCompute
+      ? impl->Compute.GetTargetBytes() + 4 * pixels
+      : vtkTiledRayCastFragmentPipeline::GetBytesPerPixel() * pixels);
 }
 
 //------------------------------------------------------------------------------
