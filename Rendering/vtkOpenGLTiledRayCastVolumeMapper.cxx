@@ -54,6 +54,7 @@
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
+#include "vtkTiledRayCastMeshTextures.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -131,16 +132,6 @@ const char* FragmentPipelineVersion(vtkOpenGLRenderWindow* window)
 // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
 // place: the next layer must then have a larger key than the last (both pipelines' peeling).
 const float PeelEpsilon = 2e-6f;
-
-// A mesh array on the GPU.
-struct MeshTexture
-{
-  std::string Uniform;
-  int Kind = -1; // vtkTetMeshLayout::ArrayKind: a texture buffer's name never becomes a 2D texture
-  vtkNew<vtkOpenGLBufferObject> Buffer;
-  vtkNew<vtkTextureObject> Texture;
-  vtkIdType Bytes = 0;
-};
 
 void ActivateAll(const std::vector<vtkTextureObject*>& textures, bool activate)
 {
@@ -239,13 +230,11 @@ public:
   int LayoutTextureLimit = 0;
   vtkMTimeType MeshTime = 0;
   vtkMTimeType ReportedTime = 0;
-  std::vector<MeshTexture*> MeshTextures;
+  vtkTiledRayCastMeshTextures MeshTextures;
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
   vtkTiledRayCastVisibleMesh VisibleMesh;
   vtkIdType TextureBufferLimit = 0;
   vtkIdType NumberOfTets = 0;
-  vtkMTimeType UploadedLayoutTime = 0;
-  vtkIdType MeshBytes = 0;
   bool HasCellScalars = false;
   double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
   double Shift[3] = { 0, 0, 0 };
@@ -364,7 +353,6 @@ public:
   void SetSampleScaleUniforms(vtkShaderProgram* program) override;
 
   void ReleaseGraphicsResources(vtkWindow* window);
-  void ClearMeshTextures();
 };
 
 //------------------------------------------------------------------------------
@@ -696,7 +684,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
     this->Layout->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
     this->Layout->AddObserver(vtkCommand::WarningEvent, this->Silencer);
     this->LayoutKind = kind;
-    this->UploadedLayoutTime = 0;
+    this->MeshTextures.Invalidate();
   }
   vtkTetMeshLayout* layout = this->Layout;
   layout->SetMaximumTextureSize(textureLimit);
@@ -739,113 +727,15 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ClearMeshTextures()
-{
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    t->Texture->ReleaseGraphicsResources(this->CheckedWindow);
-    t->Buffer->ReleaseGraphicsResources();
-    delete t;
-  }
-  this->MeshTextures.clear();
-}
-
-//------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRenderWindow* window)
 {
-  vtkTetMeshLayout* layout = this->Layout;
-  if (layout->GetMTime() <= this->UploadedLayoutTime && !this->MeshTextures.empty())
-  {
-    return true; // nothing changed: only the camera moved
-  }
-
-  // The layout has checked its arrays against the GPU's limits; the boundary faces too:
-  const int n = layout->GetNumberOfArrays();
-
-  vtkOpenGLClearErrorMacro();
   vtkIdType uploaded = 0;
-  // The same arrays: same count, names and kinds (the layouts differ in all three).
-  bool sameArrays = static_cast<int>(this->MeshTextures.size()) == n;
-  for (int i = 0; sameArrays && i < n; ++i)
+  std::string error;
+  if (!this->MeshTextures.Update(window, this->Layout, this->Builder->GetMesh(), uploaded, error))
   {
-    sameArrays = this->MeshTextures[i]->Uniform == std::string("in_") + layout->GetArrayName(i) &&
-      this->MeshTextures[i]->Kind == layout->GetArrayKind(i);
-  }
-  if (!sameArrays)
-  {
-    this->ClearMeshTextures();
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    if (!sameArrays)
-    {
-      this->MeshTextures.push_back(new MeshTexture);
-    }
-    MeshTexture* t = this->MeshTextures[i];
-    vtkDataArray* array = layout->GetArray(i);
-    if (sameArrays && array->GetMTime() <= this->UploadedLayoutTime)
-    {
-      continue; // e.g. only the points moved: topology stays on the GPU
-    }
-    t->Uniform = std::string("in_") + layout->GetArrayName(i);
-    t->Kind = layout->GetArrayKind(i);
-    const int comps = array->GetNumberOfComponents();
-    const bool isFloat = array->GetDataType() == VTK_FLOAT;
-    static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
-    static const unsigned int uintFormats[5] = { 0, GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI };
-    if (comps < 1 || comps > 4 || comps == 3 ||
-      (!isFloat && array->GetDataType() != VTK_TYPE_UINT32))
-    {
-      this->ReportError("Internal error: a mesh layout array of an unsupported type.");
-      return false;
-    }
-    const vtkIdType bytes = array->GetNumberOfValues() * array->GetDataTypeSize();
-    t->Texture->SetContext(window);
-    t->Texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
-    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TextureBuffer)
-    {
-      t->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-      if (isFloat)
-      {
-        t->Buffer->Upload(static_cast<const float*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
-      }
-      else
-      {
-        t->Buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
-      }
-      t->Texture->CreateTextureBuffer(static_cast<unsigned int>(array->GetNumberOfTuples()), comps,
-        isFloat ? VTK_FLOAT : VTK_UNSIGNED_INT, t->Buffer);
-    }
-    else
-    {
-      int size[2];
-      layout->GetArrayTextureSize(i, size);
-      t->Texture->SetFormat(comps == 4 ? GL_RGBA : GL_RED);
-      t->Texture->SetDataType(GL_FLOAT);
-      t->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      t->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      t->Texture->Create2DFromRaw(size[0], size[1], comps, VTK_FLOAT, array->GetVoidPointer(0));
-    }
-    t->Bytes = bytes;
-    uploaded += bytes;
-  }
-
-  vtkTetMesh* mesh = this->Builder->GetMesh();
-  if (glGetError() == GL_OUT_OF_MEMORY)
-  {
-    this->ReportError("The GPU ran out of memory while uploading the mesh. Nothing is drawn.");
-    this->ClearMeshTextures();
+    this->ReportError(error);
     return false;
   }
-
-  this->MeshBytes = 0;
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    this->MeshBytes += t->Bytes;
-  }
-  this->UploadedLayoutTime = std::max(layout->GetMTime(), mesh->GetMTime());
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
@@ -1290,11 +1180,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool activate)
 {
+  // The mesh's textures take the first units, then the others in this order.
+  this->MeshTextures.ActivateTextures(activate);
   std::vector<vtkTextureObject*> textures;
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    textures.push_back(t->Texture);
-  }
   textures.push_back(this->OpaqueDepth);
   if (this->UseCompute)
   {
@@ -1366,10 +1254,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetCoverageUniforms(vtkSha
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderProgram* p)
 {
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    p->SetUniformi(t->Uniform.c_str(), t->Texture->GetTextureUnit());
-  }
+  this->MeshTextures.SetUniforms(p);
   this->VisibleMesh.SetUniforms(p);
   if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Layout))
   {
@@ -1482,7 +1367,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetSampleScaleUniforms(vtk
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Compute.ReleaseGraphicsResources(window);
-  this->ClearMeshTextures();
+  this->MeshTextures.ReleaseGraphicsResources(this->CheckedWindow);
   this->VisibleMesh.ReleaseGraphicsResources(window);
   this->NodeTexture->ReleaseGraphicsResources(window);
   this->NodeBuffer->ReleaseGraphicsResources();
@@ -1494,11 +1379,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->UseCompute = false;
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
-  this->UploadedLayoutTime = 0;
   this->UploadedNodesTime = 0;
   this->UploadedTableTime = 0;
   this->UploadedTableMode = -1;
-  this->MeshBytes = 0;
   this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
 }
@@ -1784,7 +1667,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   stats->SetImageSize(impl->ImageSize);
   stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
-  const vtkIdType meshBytes = impl->MeshBytes + impl->VisibleMesh.GetBytes();
+  const vtkIdType meshBytes = impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes();
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
     impl->NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->NumberOfTets : 0.0);
