@@ -51,6 +51,7 @@
 #include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastIntegrationChoice.h"
+#include "vtkTiledRayCastIntegrationTextures.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
@@ -64,7 +65,6 @@
 #include "vtkTiledRayCastVisibleMesh.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkWeakPointer.h"
@@ -245,13 +245,7 @@ public:
   // Transfer function.
   vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
   vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
-  vtkNew<vtkOpenGLBufferObject> NodeBuffer;
-  vtkNew<vtkTextureObject> NodeTexture;
-  vtkNew<vtkTextureObject> PsiTexture;
-  vtkNew<vtkTextureObject> TableTexture;
-  vtkMTimeType UploadedNodesTime = 0;
-  vtkMTimeType UploadedTableTime = 0;
-  int UploadedTableMode = -1;
+  vtkTiledRayCastIntegrationTextures IntegrationTextures;
   vtkIdType TransferFunctionBytes = 0;
 
   vtkNew<vtkTextureObject> OpaqueDepth;
@@ -765,36 +759,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
       : -1.0);
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
-    if (this->TransferFunction->GetMTime() > this->UploadedNodesTime)
-    {
-      const std::vector<float>& texels = this->TransferFunction->GetNodeTexels();
-      this->NodeBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-      this->NodeBuffer->Upload(texels, vtkOpenGLBufferObject::TextureBuffer);
-      this->NodeTexture->SetContext(window);
-      this->NodeTexture->SetInternalFormat(GL_RGBA32F);
-      this->NodeTexture->CreateTextureBuffer(
-        static_cast<unsigned int>(texels.size() / 4), 4, VTK_FLOAT, this->NodeBuffer);
-      this->UploadedNodesTime = this->TransferFunction->GetMTime();
-      uploaded += static_cast<vtkIdType>(texels.size() * sizeof(float));
-    }
-    if (!this->PsiTexture->GetHandle())
-    {
-      // Moreland and Angel's Psi: the same static table as VTK's partial pre-integration.
-      vtkUnstructuredGridPartialPreIntegration::BuildPsiTable();
-      int size = 0;
-      float* psi = vtkUnstructuredGridPartialPreIntegration::GetPsiTable(size);
-      this->PsiTexture->SetContext(window);
-      this->PsiTexture->SetInternalFormat(GL_R32F);
-      this->PsiTexture->SetFormat(GL_RED);
-      this->PsiTexture->SetDataType(GL_FLOAT);
-      this->PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
-      this->PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-      this->PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-      // The table is indexed [front][back]; texture rows are t, columns s: s = back, t = front.
-      this->PsiTexture->Create2DFromRaw(size, size, 1, VTK_FLOAT, psi);
-      uploaded += static_cast<vtkIdType>(size) * size * 4;
-    }
+    this->IntegrationTextures.UpdateNodes(window, this->TransferFunction, uploaded);
     this->TransferFunctionBytes = static_cast<vtkIdType>(
       this->TransferFunction->GetNodeTexels().size() * sizeof(float) + 512 * 512 * 4);
     stats->SetPreIntegrationTableSize(0, 0, 0);
@@ -806,45 +771,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
     this->ConfigureTable(mode);
     table->Update(property, this->TransferFunction, this->ScalarRange);
-    if (table->GetMTime() > this->UploadedTableTime || mode != this->UploadedTableMode)
+    std::string error;
+    if (!this->IntegrationTextures.UpdateTable(window, table, mode, self, uploaded, error))
     {
-      int size[3];
-      table->GetSize(size);
-      if (table->GetReducedFromScalarSize() > 0)
-      {
-        // Once per build that had to give up resolution.
-        vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
-                                        << "D pre-integration table of this transfer function "
-                                           "would take more than "
-                                        << table->GetBuildTimeBudget() << " s to build at "
-                                        << table->GetReducedFromScalarSize()
-                                        << " scalar steps: it was built at " << size[0]
-                                        << ", coarser. Partial pre-integration (the default "
-                                           "integration mode) needs no table and is exact for it.");
-      }
-      vtkTextureObject* tex = this->TableTexture;
-      tex->ReleaseGraphicsResources(window);
-      tex->SetContext(window);
-      tex->SetInternalFormat(GL_RGBA32F);
-      tex->SetFormat(GL_RGBA);
-      tex->SetDataType(GL_FLOAT);
-      tex->SetMinificationFilter(vtkTextureObject::Linear);
-      tex->SetMagnificationFilter(vtkTextureObject::Linear);
-      tex->SetWrapS(vtkTextureObject::ClampToEdge);
-      tex->SetWrapT(vtkTextureObject::ClampToEdge);
-      tex->SetWrapR(vtkTextureObject::ClampToEdge);
-      float* data = table->GetTable();
-      bool ok = table->GetDimension() == 3
-        ? tex->Create3DFromRaw(size[0], size[1], size[2], 4, VTK_FLOAT, data)
-        : tex->Create2DFromRaw(size[0], size[1], 4, VTK_FLOAT, data);
-      if (!ok)
-      {
-        this->ReportError("Cannot create the pre-integration table texture. Nothing is drawn.");
-        return false;
-      }
-      this->UploadedTableTime = table->GetMTime();
-      this->UploadedTableMode = mode;
-      uploaded += table->GetNumberOfBytes();
+      this->ReportError(error);
+      return false;
     }
     this->TransferFunctionBytes = table->GetNumberOfBytes();
     int size[3];
@@ -1195,17 +1126,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
     textures.clear();
     this->Fragment.ActivateTextures(activate);
   }
-  const int mode = this->IntegrationMode();
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
-  {
-    textures.push_back(this->NodeTexture);
-    textures.push_back(this->PsiTexture);
-  }
-  else
-  {
-    textures.push_back(this->TableTexture);
-  }
   ActivateAll(textures, activate);
+  this->IntegrationTextures.ActivateTextures(this->IntegrationMode(), activate);
   this->VisibleMesh.ActivateTextures(activate);
 }
 
@@ -1314,44 +1236,14 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShad
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->IntegrationMode();
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  this->IntegrationTextures.SetUniforms(p, mode, this->TransferFunction, this->Table,
+    vtkTetMesh::ComputeScalarShift(this->ScalarRange));
+  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
+    this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {
-    p->SetUniformi("in_transferFunction", this->NodeTexture->GetTextureUnit());
-    p->SetUniformi("in_transferFunctionNodes", this->TransferFunction->GetNumberOfNodes());
-    p->SetUniformi("in_psiTable", this->PsiTexture->GetTextureUnit());
-    p->SetUniformf("in_psiTableSize", static_cast<float>(this->PsiTexture->GetWidth()));
-    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-    {
-      this->SetBlendUniforms(p);
-    }
-    this->SetShadingUniforms(p);
-    return;
+    this->SetBlendUniforms(p);
   }
   this->SetShadingUniforms(p);
-  vtkTiledRayCastPreIntegrationTable* table = this->Table;
-  int size[3];
-  table->GetSize(size);
-  double range[2];
-  table->GetScalarRange(range);
-  // The mesh's scalars are shifted on the GPU (vtkTetMesh::GetScalarShift): so is the table's
-  // first grid scalar.
-  const float scalarMap[3] = { static_cast<float>(
-                                 range[0] - vtkTetMesh::ComputeScalarShift(this->ScalarRange)),
-    static_cast<float>(range[1] > range[0] ? (size[0] - 1) / (range[1] - range[0]) : 0.0),
-    static_cast<float>(size[0]) };
-  p->SetUniformi("in_preIntegrationTable", this->TableTexture->GetTextureUnit());
-  p->SetUniform3f("in_tableScalarMap", scalarMap);
-  if (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D)
-  {
-    const double longest = table->GetMaximumLength();
-    const float lengthMap[3] = { static_cast<float>(longest > 0 ? (size[2] - 1) / longest : 0.0),
-      static_cast<float>(size[2]), static_cast<float>(longest > 0 ? longest : 1e30) };
-    p->SetUniform3f("in_tableLengthMap", lengthMap);
-  }
-  else
-  {
-    p->SetUniformf("in_tableReferenceLength", static_cast<float>(table->GetReferenceLength()));
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -1369,19 +1261,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->Compute.ReleaseGraphicsResources(window);
   this->MeshTextures.ReleaseGraphicsResources(this->CheckedWindow);
   this->VisibleMesh.ReleaseGraphicsResources(window);
-  this->NodeTexture->ReleaseGraphicsResources(window);
-  this->NodeBuffer->ReleaseGraphicsResources();
-  this->PsiTexture->ReleaseGraphicsResources(window);
-  this->TableTexture->ReleaseGraphicsResources(window);
+  this->IntegrationTextures.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
   this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
   this->OpaqueDepth->ReleaseGraphicsResources(window);
   this->UseCompute = false;
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
-  this->UploadedNodesTime = 0;
-  this->UploadedTableTime = 0;
-  this->UploadedTableMode = -1;
   this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
 }
