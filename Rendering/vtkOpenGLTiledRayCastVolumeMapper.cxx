@@ -56,6 +56,7 @@
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshInput.h"
 #include "vtkTiledRayCastMeshTextures.h"
+#include "vtkTiledRayCastOpaqueDepth.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -248,9 +249,8 @@ public:
   vtkTiledRayCastIntegrationTextures IntegrationTextures;
   vtkIdType TransferFunctionBytes = 0;
 
-  vtkNew<vtkTextureObject> OpaqueDepth;
-  vtkNew<vtkOpenGLFramebufferObject> OpaqueDepthFramebuffer;
-  unsigned int OpaqueDepthFormat = 0;
+  // The scene's depth, which ends the rays.
+  vtkTiledRayCastOpaqueDepth OpaqueDepth;
   // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
   int ImageSize[2] = { 0, 0 };
   vtkTiledRayCastSampleDistance SampleDistance;
@@ -976,122 +976,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
-  // Blit the depth of the caller's framebuffer (possibly multisampled) into a texture of ours,
-  // as VTK's GPU ray-cast mapper does. A depth blit needs the same format on both sides, so the
-  // texture takes the format of the framebuffer's depth attachment, whatever the window or the
-  // render pass made it.
-  vtkOpenGLState* state = window->GetState();
-  GLint readFramebuffer = 0;
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint depthBits = 0, stencilBits = 0, componentType = GL_UNSIGNED_NORMALIZED;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-  if (depthBits > 0)
+  std::string error;
+  if (!this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error))
   {
-    glGetFramebufferAttachmentParameteriv(
-      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
-    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
-      readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-      &stencilBits);
-  }
-  unsigned int format = 0;
-  if (depthBits == 0)
-  {
-    format = GL_NONE; // no depth buffer: nothing opaque stops the rays
-  }
-  else if (stencilBits > 0)
-  {
-    format = componentType == GL_FLOAT ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
-  }
-  else if (componentType == GL_FLOAT)
-  {
-    format = GL_DEPTH_COMPONENT32F;
-  }
-  else
-  {
-    format = depthBits >= 32 ? GL_DEPTH_COMPONENT32
-                             : (depthBits >= 24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16);
-  }
-
-  vtkTextureObject* depth = this->OpaqueDepth;
-  // Grows only, like the targets.
-  const bool resized = depth->GetWidth() < static_cast<unsigned int>(width) ||
-    depth->GetHeight() < static_cast<unsigned int>(height);
-  if (format != this->OpaqueDepthFormat || resized || !depth->GetHandle())
-  {
-    const int allocatedWidth = std::max<int>(width, depth->GetHandle() ? depth->GetWidth() : 0);
-    const int allocatedHeight = std::max<int>(height, depth->GetHandle() ? depth->GetHeight() : 0);
-    // A framebuffer object skips re-adding the texture object it already holds, though the
-    // texture behind it is new: start it afresh.
-    this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
-    depth->ReleaseGraphicsResources(window);
-    depth->SetContext(window);
-    depth->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-    depth->SetWrapS(vtkTextureObject::ClampToEdge);
-    depth->SetWrapT(vtkTextureObject::ClampToEdge);
-    bool ok = true;
-    if (format == GL_DEPTH24_STENCIL8)
-    {
-      ok = depth->AllocateDepthStencil(allocatedWidth, allocatedHeight);
-    }
-    else
-    {
-      const bool stencil = format == GL_DEPTH32F_STENCIL8;
-      depth->SetInternalFormat(format == GL_NONE ? GL_DEPTH_COMPONENT32F : format);
-      depth->SetFormat(stencil ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT);
-      depth->SetDataType(stencil
-          ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
-          : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE ? GL_FLOAT : GL_UNSIGNED_INT));
-      ok = depth->Allocate2D(allocatedWidth, allocatedHeight, 1, VTK_FLOAT);
-    }
-    if (!ok)
-    {
-      this->ReportError("Cannot allocate a texture for the scene's depth. Nothing is drawn.");
-      return false;
-    }
-    state->PushFramebufferBindings();
-    this->OpaqueDepthFramebuffer->SetContext(window);
-    this->OpaqueDepthFramebuffer->Bind();
-    this->OpaqueDepthFramebuffer->AddDepthAttachment(depth);
-    state->vtkglDrawBuffer(GL_NONE);
-    state->vtkglReadBuffer(GL_NONE);
-    state->PopFramebufferBindings();
-    this->OpaqueDepthFormat = format;
-  }
-
-  // Errors left by earlier GL calls are not this blit's (vtkOpenGLClearErrorMacro is compiled
-  // out of release builds of VTK).
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
-  {
-  }
-  state->PushDrawFramebufferBinding();
-  this->OpaqueDepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  if (format == GL_NONE)
-  {
-    // Depth 1 everywhere: the rays run to the far plane.
-    vtkOpenGLState::ScopedglDepthMask depthMask(state);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  }
-  else
-  {
-    // One depth per ray: at an image sample distance above 1 the nearest of the pixels around
-    // the ray (a depth blit may scale, never filter).
-    state->vtkglBlitFramebuffer(this->Viewport[0], this->Viewport[1], this->Viewport[0] + width,
-      this->Viewport[1] + height, 0, 0, this->ImageSize[0], this->ImageSize[1],
-      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
-  state->PopDrawFramebufferBinding();
-  const GLenum error = glGetError();
-  if (error != GL_NO_ERROR)
-  {
-    std::ostringstream msg;
-    msg << "Cannot read the depth of the scene's framebuffer (" << vtkOpenGLStrError(error)
-        << ", depth format 0x" << std::hex << format << "). Nothing is drawn.";
-    this->ReportError(msg.str());
+    this->ReportError(error);
     return false;
   }
   return true;
@@ -1114,7 +1002,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   // The mesh's textures take the first units, then the others in this order.
   this->MeshTextures.ActivateTextures(activate);
   std::vector<vtkTextureObject*> textures;
-  textures.push_back(this->OpaqueDepth);
+  textures.push_back(this->OpaqueDepth.GetTexture());
   if (this->UseCompute)
   {
     textures.push_back(this->Compute.GetColorTexture());
@@ -1155,7 +1043,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShader
   {
     p->SetUniform4fv("in_clippingPlanes", g.NumberOfClippingPlanes, g.ClippingPlanes);
   }
-  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth->GetTextureUnit());
+  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth.GetTexture()->GetTextureUnit());
   p->SetUniformf(
     "in_earlyTerminationOpacity", static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
 }
@@ -1263,8 +1151,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->VisibleMesh.ReleaseGraphicsResources(window);
   this->IntegrationTextures.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
-  this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
-  this->OpaqueDepth->ReleaseGraphicsResources(window);
+  this->OpaqueDepth.ReleaseGraphicsResources(window);
   this->UseCompute = false;
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
