@@ -61,6 +61,7 @@
 #include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastSampleDistance.h"
+#include "vtkTiledRayCastShaderComposition.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
 #include "vtkTiledRayCastVisibleMesh.h"
@@ -72,15 +73,6 @@
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include "vtkTiledRayCastCommonFS.h"
-#include "vtkTiledRayCastCompactLayout.h"
-#include "vtkTiledRayCastGradientOpacity.h"
-#include "vtkTiledRayCastPaperLayout.h"
-#include "vtkTiledRayCastBlendModes.h"
-#include "vtkTiledRayCastPartialPreIntegration.h"
-#include "vtkTiledRayCastPreIntegration2D.h"
-#include "vtkTiledRayCastPreIntegration3D.h"
-#include "vtkTiledRayCastShading.h"
 
 #include <algorithm>
 #include <array>
@@ -220,6 +212,8 @@ public:
   bool UseCompute = false;
   vtkTiledRayCastComputePipeline Compute;
   vtkTiledRayCastFragmentPipeline Fragment;
+  // What the pipeline's programs were last built from.
+  vtkTiledRayCastShaderComposition Composition;
 
   // CPU mesh and its GPU layout.
   vtkNew<vtkCallbackCommand> Silencer;
@@ -363,6 +357,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
     (requested == vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE && this->ComputeSupported);
   if (compute != this->UseCompute && this->CheckedWindow)
   {
+    this->Composition.Reset();
     // The other pipeline's per-pixel memory is no longer needed.
     if (compute)
     {
@@ -881,69 +876,32 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  const bool paper = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
-  const int mode = this->IntegrationMode();
-
-  std::string layoutCode = paper ? vtkTiledRayCastPaperLayout : vtkTiledRayCastCompactLayout;
-  if (!paper && this->HasCellScalars)
+  vtkTiledRayCastShaderComposition::Inputs inputs;
+  inputs.Window = window;
+  inputs.Compute = this->UseCompute;
+  inputs.PaperLayout = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  inputs.CellScalars = this->HasCellScalars;
+  inputs.IntegrationMode = this->IntegrationMode();
+  inputs.BlendMode = this->Self->GetBlendMode();
+  inputs.Shading = this->Lighting.Enabled;
+  inputs.GradientOpacity = this->GradientOpacity.Enabled;
+  inputs.SkipEmptySpace = this->VisibleMesh.GetSkipsEmptySpace();
+  if (!this->Composition.Changed(inputs))
   {
-    // Cell scalars: constant per tet, the field has no gradient.
-    vtkShaderProgram::Substitute(
-      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_TetScalars;");
-    vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
-      "float cellScalar = texelFetch(in_TetScalars, int(tet)).r;\n"
-      "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
+    return true; // the programs of these inputs are built
   }
-  const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
-    ? vtkTiledRayCastPreIntegration3D
-    : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
-          ? vtkTiledRayCastPreIntegration2D
-          : vtkTiledRayCastPartialPreIntegration);
-  std::string integrationCode = integration;
-  if (self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-  {
-    // The blend modes evaluate the partial pre-integration's node list and bring their own
-    // trcIntegrate.
-    vtkShaderProgram::Substitute(
-      integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
-    integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
-  }
-  else
-  {
-    // Shaded walks, or walks with gradient opacity, only where the property asks: the walk
-    // without them stays as it is.
-    if (this->Lighting.Enabled)
-    {
-      integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
-    }
-    if (this->GradientOpacity.Enabled)
-    {
-      integrationCode =
-        "#define TRC_GRADIENT_OPACITY\n" + integrationCode + vtkTiledRayCastGradientOpacity;
-    }
-  }
-  std::vector<std::pair<std::string, std::string>> common = {
-    { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
-    { "//TRC::Layout::Dec", layoutCode },
-    { "//TRC::Integration::Dec", integrationCode },
-  };
-  if (this->UseCompute)
-  {
-    std::string error;
-    if (!this->Compute.UpdatePrograms(window, common, error))
-    {
-      this->ReportError(error);
-      return false;
-    }
-    return true;
-  }
+  const vtkTiledRayCastShaderComposition::Replacements common =
+    vtkTiledRayCastShaderComposition::Compose(inputs, this->VisibleMesh.GetShaderDefinitions());
   std::string error;
-  if (!this->Fragment.UpdatePrograms(window, this->VersionHeader, common, error))
+  const bool built = this->UseCompute
+    ? this->Compute.UpdatePrograms(window, common, error)
+    : this->Fragment.UpdatePrograms(window, this->VersionHeader, common, error);
+  if (!built)
   {
     this->ReportError(error);
     return false;
   }
+  this->Composition.Built(inputs);
   return true;
 }
 
@@ -1153,6 +1111,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->Fragment.ReleaseGraphicsResources(window);
   this->OpaqueDepth.ReleaseGraphicsResources(window);
   this->UseCompute = false;
+  this->Composition.Reset();
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->TransferFunctionBytes = 0;
