@@ -340,6 +340,17 @@ public:
   // Compositing: rays per viewport pixel along x and y (1 at an image sample distance of 1).
   void SetSampleScaleUniforms(vtkShaderProgram* program) override;
 
+  // The steps of Render.
+  void WarnTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol);
+  bool CheckBlendMode();
+  // The CPU work of a frame (only what changed) and the GPU resources it needs; false when
+  // nothing is drawn. Sets the number of rays along x and y.
+  bool PrepareFrame(vtkRenderer* ren, vtkVolume* vol, vtkDataObject* input,
+    vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2]);
+  // The GPU work of a frame, in the OpenGL state it restores.
+  bool DrawFrame(vtkOpenGLRenderWindow* window, const int rays[2]);
+  void WarnAfterFrame();
+
   void ReleaseGraphicsResources(vtkWindow* window);
 };
 
@@ -1176,6 +1187,196 @@ int vtkOpenGLTiledRayCastVolumeMapper::IsRenderSupported(
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnTranslucentGeometry(
+  vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
+  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
+  // it, the volume's property keys carry the peeling pass's depth-mask override).
+  vtkInformation* keys = vol->GetPropertyKeys();
+  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  for (vtkProp* prop = props->GetNextProp(it);
+       prop && !translucentGeometry && !this->WarnedTranslucentGeometry;
+       prop = props->GetNextProp(it))
+  {
+    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+      prop->HasTranslucentPolygonalGeometry();
+  }
+  if (translucentGeometry && !this->WarnedTranslucentGeometry)
+  {
+    vtkWarningWithObjectMacro(self,
+      "Translucent polygonal geometry in the same renderer is not composited "
+      "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
+      "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
+      "render it in another renderer.");
+    this->WarnedTranslucentGeometry = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckBlendMode()
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  if (self->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
+    self->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
+  {
+    this->ReportError("Blend mode " + std::to_string(self->BlendMode) +
+      " is not supported (composite, maximum, minimum and average intensity, additive are). "
+      "Nothing is drawn.");
+    return false;
+  }
+  if (self->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !this->UseCompute)
+  {
+    this->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
+                      "Nothing is drawn.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* ren, vtkVolume* vol,
+  vtkDataObject* input, vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2])
+{
+  // CPU work: only what changed.
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  const int width = this->Viewport[2];
+  const int height = this->Viewport[3];
+  if (!this->UpdateMesh(input, property))
+  {
+    return false;
+  }
+  if (!this->Geometry.Compute(ren, vol, this->Shift, this->MeshBounds))
+  {
+    this->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
+    return false;
+  }
+  this->Lighting.Compute(ren, vol, self->BlendMode);
+  this->GradientOpacity.Compute(property, self->BlendMode);
+  this->WarnLighting();
+  if (!this->Geometry.ComputeClippingPlanes(self->ClippingPlanes, this->MeshBounds) &&
+    !this->WarnedClippingPlanes)
+  {
+    vtkErrorWithObjectMacro(
+      self, << self->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "
+            << "clips with the first " << vtkTiledRayCastFrameGeometry::MaximumClippingPlanes
+            << " (as VTK's OpenGL mappers).");
+    this->WarnedClippingPlanes = true;
+  }
+  if (this->Geometry.ClippedAway)
+  {
+    return false; // the clipping planes leave nothing of the mesh: nothing is visible
+  }
+  // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
+  // the volume (vtkTiledRayCastSampleDistance).
+  this->FrameSampleDistance = this->SampleDistance.Choose(self->AutoAdjustSampleDistances != 0,
+    self->ImageSampleDistance, self->MinimumImageSampleDistance, self->MaximumImageSampleDistance,
+    vol->GetAllocatedRenderTime());
+  vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, this->FrameSampleDistance, rays);
+  if (!this->UploadMesh(window) || !this->UpdateTransferFunction(property, window) ||
+    !this->UpdateVisibleMesh(window) || !this->UpdatePrograms(window) ||
+    !this->UpdateTargets(window, rays[0], rays[1]))
+  {
+    return false;
+  }
+  this->LastError.clear();
+  this->ReadTimers(self->SynchronousStatistics);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawFrame(
+  vtkOpenGLRenderWindow* window, const int rays[2])
+{
+  // GPU work.
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  const int width = this->Viewport[2];
+  const int height = this->Viewport[3];
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+
+  // GPU timers of the previous frame still in flight are not restarted: this frame is then not
+  // timed, and the statistics keep the latest times measured.
+  if (this->Timers.BeginFrame())
+  {
+    this->TimedSampleDistance = this->FrameSampleDistance;
+  }
+  this->Timers.Start(vtkTiledRayCastPhaseTimers::Total);
+  // The opaque geometry drawn so far ends the rays.
+  if (!this->CaptureOpaqueDepth(window, width, height))
+  {
+    return false;
+  }
+
+  state->PushFramebufferBindings();
+  state->vtkglViewport(0, 0, rays[0], rays[1]);
+  int cullFaceMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
+  this->ActivateTextures(true);
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  stats->SetPipeline(this->UseCompute ? "Compute" : "Fragment");
+  const bool ok = this->UseCompute ? this->RenderCompute(window) : this->RenderFragment(window);
+  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Total);
+  this->Timers.EndFrame();
+  state->vtkglCullFace(cullFaceMode);
+  this->ActivateTextures(false);
+  if (!ok)
+  {
+    return false;
+  }
+  if (self->SynchronousStatistics)
+  {
+    if (this->UseCompute)
+    {
+      this->Compute.ReadCounts(stats);
+    }
+    this->ReadTimers(true);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnAfterFrame()
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  if (this->UseCompute && this->Compute.GetNumberOfRaysStopped() > 0 && !this->WarnedStoppedRays)
+  {
+    vtkWarningWithObjectMacro(
+      self, << this->Compute.GetNumberOfRaysStopped()
+            << " rays reached the bound of steps in one boundary layer and were "
+               "stopped; the mesh's neighbour links may loop.");
+    this->WarnedStoppedRays = true;
+  }
+  const vtkIdType incomplete = this->UseCompute ? this->Compute.TakeNumberOfRaysIncomplete() : 0;
+  if (incomplete > 0)
+  {
+    // Every time: each is a frame drawn with layers missing, which the next frames are not.
+    vtkWarningWithObjectMacro(
+      self, << incomplete << " rays of a recent frame missed boundary layers: the view asked for "
+            << stats->GetNumberOfEntries()
+            << " ray entries, far more than the frames before it, and the entry list "
+               "did not hold them. The list has grown to fit; turn "
+               "SynchronousStatistics on to verify every frame.");
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->Timer->StartTimer();
@@ -1210,41 +1411,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
-  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
-  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
-  // it, the volume's property keys carry the peeling pass's depth-mask override).
-  vtkInformation* keys = vol->GetPropertyKeys();
-  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  for (vtkProp* prop = props->GetNextProp(it);
-       prop && !translucentGeometry && !impl->WarnedTranslucentGeometry;
-       prop = props->GetNextProp(it))
+  impl->WarnTranslucentGeometry(ren, vol);
+  if (!impl->CheckBlendMode())
   {
-    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
-      prop->HasTranslucentPolygonalGeometry();
-  }
-  if (translucentGeometry && !impl->WarnedTranslucentGeometry)
-  {
-    vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
-                    "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
-                    "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
-                    "render it in another renderer.");
-    impl->WarnedTranslucentGeometry = true;
-  }
-  if (this->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
-    this->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
-  {
-    impl->ReportError("Blend mode " + std::to_string(this->BlendMode) +
-      " is not supported (composite, maximum, minimum and average intensity, additive are). "
-      "Nothing is drawn.");
-    return;
-  }
-  if (this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !impl->UseCompute)
-  {
-    impl->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
-                      "Nothing is drawn.");
     return;
   }
   vtkVolumeProperty* property = vol->GetProperty();
@@ -1271,117 +1440,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
-  // CPU work: only what changed.
-  if (!impl->UpdateMesh(input, property))
-  {
-    return;
-  }
-  if (!impl->Geometry.Compute(ren, vol, impl->Shift, impl->MeshBounds))
-  {
-    impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
-    return;
-  }
-  impl->Lighting.Compute(ren, vol, this->BlendMode);
-  impl->GradientOpacity.Compute(property, this->BlendMode);
-  impl->WarnLighting();
-  if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
-    !impl->WarnedClippingPlanes)
-  {
-    vtkErrorMacro(<< this->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "
-                  << "clips with the first " << vtkTiledRayCastFrameGeometry::MaximumClippingPlanes
-                  << " (as VTK's OpenGL mappers).");
-    impl->WarnedClippingPlanes = true;
-  }
-  if (impl->Geometry.ClippedAway)
-  {
-    return; // the clipping planes leave nothing of the mesh: nothing is visible
-  }
-  // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
-  // the volume (vtkTiledRayCastSampleDistance).
-  impl->FrameSampleDistance = impl->SampleDistance.Choose(this->AutoAdjustSampleDistances != 0,
-    this->ImageSampleDistance, this->MinimumImageSampleDistance, this->MaximumImageSampleDistance,
-    vol->GetAllocatedRenderTime());
   int rays[2];
-  vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, impl->FrameSampleDistance, rays);
-  if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
-    !impl->UpdateVisibleMesh(window) || !impl->UpdatePrograms(window) ||
-    !impl->UpdateTargets(window, rays[0], rays[1]))
+  if (!impl->PrepareFrame(ren, vol, input, property, window, rays) ||
+    !impl->DrawFrame(window, rays))
   {
     return;
   }
-  impl->LastError.clear();
-  impl->ReadTimers(this->SynchronousStatistics);
-
-  // GPU work.
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-
-  // GPU timers of the previous frame still in flight are not restarted: this frame is then not
-  // timed, and the statistics keep the latest times measured.
-  if (impl->Timers.BeginFrame())
-  {
-    impl->TimedSampleDistance = impl->FrameSampleDistance;
-  }
-  impl->Timers.Start(vtkTiledRayCastPhaseTimers::Total);
-  // The opaque geometry drawn so far ends the rays.
-  if (!impl->CaptureOpaqueDepth(window, width, height))
-  {
-    return;
-  }
-
-  state->PushFramebufferBindings();
-  state->vtkglViewport(0, 0, rays[0], rays[1]);
-  int cullFaceMode = GL_BACK;
-  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
-  impl->ActivateTextures(true);
-  vtkTiledRayCastStatistics* stats = this->Statistics;
-  stats->SetPipeline(impl->UseCompute ? "Compute" : "Fragment");
-  const bool ok = impl->UseCompute ? impl->RenderCompute(window) : impl->RenderFragment(window);
-  impl->Timers.Stop(vtkTiledRayCastPhaseTimers::Total);
-  impl->Timers.EndFrame();
-  state->vtkglCullFace(cullFaceMode);
-  impl->ActivateTextures(false);
-  if (!ok)
-  {
-    return;
-  }
-  if (this->SynchronousStatistics)
-  {
-    if (impl->UseCompute)
-    {
-      impl->Compute.ReadCounts(stats);
-    }
-    impl->ReadTimers(true);
-  }
-  if (impl->UseCompute && impl->Compute.GetNumberOfRaysStopped() > 0 && !impl->WarnedStoppedRays)
-  {
-    vtkWarningMacro(<< impl->Compute.GetNumberOfRaysStopped()
-                    << " rays reached the bound of steps in one boundary layer and were "
-                       "stopped; the mesh's neighbour links may loop.");
-    impl->WarnedStoppedRays = true;
-  }
-  const vtkIdType incomplete = impl->UseCompute ? impl->Compute.TakeNumberOfRaysIncomplete() : 0;
-  if (incomplete > 0)
-  {
-    // Every time: each is a frame drawn with layers missing, which the next frames are not.
-    vtkWarningMacro(<< incomplete
-                    << " rays of a recent frame missed boundary layers: the view asked for "
-                    << stats->GetNumberOfEntries()
-                    << " ray entries, far more than the frames before it, and the entry list "
-                       "did not hold them. The list has grown to fit; turn "
-                       "SynchronousStatistics on to verify every frame.");
-  }
+  impl->WarnAfterFrame();
   // Per pixel: the compute pipeline's targets and the scene depth (4 B); or the fragment
   // pipeline's.
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
