@@ -13,9 +13,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
-#include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
-#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -24,7 +22,6 @@
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLRenderPass.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -48,6 +45,7 @@
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastDebugEvent.h"
+#include "vtkTiledRayCastDeferredDraw.h"
 #include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
 #include "vtkTiledRayCastIntegrationChoice.h"
@@ -69,7 +67,6 @@
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
-#include "vtkWeakPointer.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
@@ -179,6 +176,7 @@ class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastPr
 public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
     : Self(self)
+    , Deferred(self)
   {
     // The builder and the layouts are the mapper's own parts: their errors and warnings end
     // up in the validation report and in the mapper's one message about them, so that a user
@@ -197,6 +195,9 @@ public:
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
+
+  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
+  vtkTiledRayCastDeferredDraw Deferred;
 
   // Context: checked once per window.
   vtkOpenGLRenderWindow* CheckedWindow = nullptr;
@@ -258,12 +259,6 @@ public:
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
   bool WarnedClippingPlanes = false;
-  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
-  vtkWeakPointer<vtkRenderer> DeferredRenderer;
-  vtkWeakPointer<vtkVolume> DeferredVolume;
-  unsigned long DeferredObserver = 0;
-  bool DeferredPending = false;
-  bool DrawingDeferred = false;
   bool WarnedPositionalLights = false;
   bool WarnedIgnoredLights = false;
   bool WarnedShadedCellScalars = false;
@@ -299,13 +294,6 @@ public:
   void ChooseIntegration(vtkVolumeProperty* property);
   // The table of a table mode, at the resolution and lengths it needs (not yet updated).
   void ConfigureTable(int mode);
-  // Draws the volume when `renderer` has finished its frame (EndEvent) instead of now.
-  void DeferToEndOfFrame(vtkRenderer* renderer, vtkVolume* volume);
-  static void DrawDeferred(vtkObject* renderer, unsigned long, void* mapper, void*);
-  void StopDeferring();
-  // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
-  // then marks the volume with itself as a render pass.
-  static bool InsideVolumetricPeeling(vtkVolume* volume);
   // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
   // GradientOpacity).
   void WarnLighting();
@@ -482,71 +470,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::str
     vtkErrorWithObjectMacro(self, << message);
     this->LastError = message;
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DeferToEndOfFrame(
-  vtkRenderer* renderer, vtkVolume* volume)
-{
-  if (renderer != this->DeferredRenderer)
-  {
-    this->StopDeferring();
-    vtkNew<vtkCallbackCommand> callback;
-    callback->SetCallback(&vtkInternals::DrawDeferred);
-    callback->SetClientData(this->Self);
-    this->DeferredObserver = renderer->AddObserver(vtkCommand::EndEvent, callback);
-    this->DeferredRenderer = renderer;
-  }
-  this->DeferredVolume = volume;
-  this->DeferredPending = true;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawDeferred(
-  vtkObject* renderer, unsigned long, void* mapper, void*)
-{
-  auto* self = static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper);
-  vtkInternals* impl = self->Impl;
-  vtkVolume* volume = impl->DeferredVolume;
-  if (!impl->DeferredPending || !volume)
-  {
-    return;
-  }
-  impl->DeferredPending = false;
-  impl->DrawingDeferred = true;
-  self->Render(static_cast<vtkRenderer*>(renderer), volume);
-  impl->DrawingDeferred = false;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::StopDeferring()
-{
-  if (vtkRenderer* renderer = this->DeferredRenderer)
-  {
-    renderer->RemoveObserver(this->DeferredObserver);
-  }
-  this->DeferredRenderer = nullptr;
-  this->DeferredVolume = nullptr;
-  this->DeferredPending = false;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::InsideVolumetricPeeling(vtkVolume* volume)
-{
-  vtkInformation* keys = volume->GetPropertyKeys();
-  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
-  if (!keys || !keys->Has(passes))
-  {
-    return false;
-  }
-  for (int i = 0; i < passes->Length(keys); ++i)
-  {
-    if (vtkDualDepthPeelingPass::SafeDownCast(passes->Get(keys, i)))
-    {
-      return true;
-    }
-  }
-  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -1140,7 +1063,7 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkOpenGLTiledRayCastVolumeMapper()
 //------------------------------------------------------------------------------
 vtkOpenGLTiledRayCastVolumeMapper::~vtkOpenGLTiledRayCastVolumeMapper()
 {
-  this->Impl->StopDeferring();
+  this->Impl->Deferred.Stop();
   // Frees the GL objects in their own context, if the window still exists.
   this->ResourceCallback->Release();
   delete this->ResourceCallback;
@@ -1400,14 +1323,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  if (!impl->DrawingDeferred && impl->InsideVolumetricPeeling(vol))
+  if (impl->Deferred.Defer(ren, vol))
   {
     // VTK's dual depth peeling hands volumes depth ranges through shader replacements written
     // for its image ray caster, which this mapper cannot take part in yet: it draws nothing in
     // the peels and draws the volume once the renderer has finished, over the composited scene,
     // as it does without depth peeling for volumes (the translucent-geometry warning below says
     // so, once).
-    impl->DeferToEndOfFrame(ren, vol);
     return;
   }
 
