@@ -10,11 +10,9 @@
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkInformation.h"
-#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -30,16 +28,11 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
-#include "vtkTetMeshBuilder.h"
-#include "vtkTetMeshCompactLayout.h"
 #include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
-#include "vtkTetMeshValidationReport.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
@@ -52,7 +45,7 @@
 #include "vtkTiledRayCastIntegrationTextures.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
-#include "vtkTiledRayCastMeshInput.h"
+#include "vtkTiledRayCastMeshBuild.h"
 #include "vtkTiledRayCastMeshTextures.h"
 #include "vtkTiledRayCastOpaqueDepth.h"
 #include "vtkTiledRayCastPhaseTimers.h"
@@ -138,36 +131,6 @@ void ActivateAll(const std::vector<vtkTextureObject*>& textures, bool activate)
   }
 }
 
-// The longest edge of any tetrahedron: the longest segment a ray can have inside one.
-double ComputeLongestEdge(vtkTetMesh* mesh)
-{
-  const double* points = mesh->GetPoints();
-  const uint32_t* tets = mesh->GetTetPoints();
-  vtkSMPThreadLocal<double> longest(0.0);
-  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double& local = longest.Local();
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const uint32_t* ids = tets + 4 * t;
-        for (int i = 0; i < 4; ++i)
-        {
-          for (int j = i + 1; j < 4; ++j)
-          {
-            local = std::max(
-              local, vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
-          }
-        }
-      }
-    });
-  double result = 0.0;
-  for (double v : longest)
-  {
-    result = std::max(result, v);
-  }
-  return std::sqrt(result);
-}
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -177,21 +140,8 @@ public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
     : Self(self)
     , Deferred(self)
+    , Mesh(self)
   {
-    // The builder and the layouts are the mapper's own parts: their errors and warnings end
-    // up in the validation report and in the mapper's one message about them, so that a user
-    // (or a test) hears of a problem once and from the object they hold.
-    this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
-    this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
-    this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
-    // The builder's progress is the mapper's (0 to 0.9, packing the layout the rest), so that
-    // an application can show it for a mesh that takes seconds to build.
-    this->BuildProgress->SetClientData(self);
-    this->BuildProgress->SetCallback([](vtkObject*, unsigned long, void* mapper, void* fraction) {
-      static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper)->UpdateProgress(
-        0.9 * *static_cast<double*>(fraction));
-    });
-    this->Builder->AddObserver(vtkCommand::ProgressEvent, this->BuildProgress);
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
@@ -216,27 +166,11 @@ public:
   // What the pipeline's programs were last built from.
   vtkTiledRayCastShaderComposition Composition;
 
-  // CPU mesh and its GPU layout.
-  vtkNew<vtkCallbackCommand> Silencer;
-  vtkNew<vtkCallbackCommand> BuildProgress;
-  vtkNew<vtkTetMeshBuilder> Builder;
-  vtkTiledRayCastMeshInput Input;
-  vtkSmartPointer<vtkTetMeshLayout> Layout;
-  int LayoutKind = -1;
-  int LayoutTextureLimit = 0;
-  vtkMTimeType MeshTime = 0;
-  vtkMTimeType ReportedTime = 0;
+  // CPU mesh and its layout.
+  vtkTiledRayCastMeshBuild Mesh;
   vtkTiledRayCastMeshTextures MeshTextures;
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
   vtkTiledRayCastVisibleMesh VisibleMesh;
-  vtkIdType TextureBufferLimit = 0;
-  vtkIdType NumberOfTets = 0;
-  bool HasCellScalars = false;
-  double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
-  double Shift[3] = { 0, 0, 0 };
-  double ScalarRange[2] = { 0, 1 };
-  double LongestEdge = 0; // in object coordinates
-  double TypicalEdge = 0; // idem
 
   // Transfer function.
   vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
@@ -319,7 +253,7 @@ public:
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
-    return static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX));
+    return static_cast<int>(std::min<vtkIdType>(this->Mesh.NumberOfTets + 1024, VTK_INT_MAX));
   }
   // The GPU work of a frame in each pipeline, from the first hit to compositing (the caller
   // has pushed the framebuffer bindings; both pop them before compositing).
@@ -382,7 +316,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRe
   frame.Height = this->ImageSize[1];
   std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
   frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  frame.NumberOfTetrahedra = this->NumberOfTets;
+  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
   frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
   frame.Mirrored = this->Geometry.Mirrored;
   frame.MaximumSteps = this->GetMaximumSteps();
@@ -404,7 +338,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.Width = this->ImageSize[0];
   frame.Height = this->ImageSize[1];
   frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  frame.NumberOfTetrahedra = this->NumberOfTets;
+  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
   frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
   frame.Mirrored = this->Geometry.Mirrored;
   frame.MaximumSteps = this->GetMaximumSteps();
@@ -500,7 +434,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
         << " nodes: it is sampled (linear between samples).");
     this->WarnedGradientOpacity = true;
   }
-  if (lighting.Enabled && this->HasCellScalars && !this->WarnedShadedCellScalars)
+  if (lighting.Enabled && this->Mesh.HasCellScalars && !this->WarnedShadedCellScalars)
   {
     vtkWarningWithObjectMacro(self, "Shading cell scalars: they are constant per cell, their "
                                     "gradient is zero, so only the ambient term lights them.");
@@ -542,109 +476,16 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTetMeshBuilder* builder = this->Builder;
-  builder->SetSpatialOrdering(self->GetSpatialOrdering());
-  // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
-  // scalar selection set for it.
-  std::string inputError;
-  vtkDataSet* input = this->Input.Prepare(self, dataObject, property, builder, inputError);
-  if (!input)
+  std::string error;
+  if (!this->Mesh.Update(dataObject, property, this->MaxTextureSize, this->MaxTextureBufferSize,
+        error))
   {
-    this->ReportError(inputError + ". Nothing is drawn.");
+    this->ReportError(error);
     return false;
   }
-
-  // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  vtkTetMesh* mesh = builder->Build(input);
-  vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
-  if (report)
+  if (this->Mesh.TakeNewLayout())
   {
-    this->Input.ReportBlocks(report);
-  }
-  if (report && report->GetMTime() > this->ReportedTime)
-  {
-    self->ValidationReport->DeepCopy(report);
-    this->ReportedTime = report->GetMTime();
-    if (report->GetUsable() && report->HasProblems())
-    {
-      vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
-    }
-  }
-  if (!report || !report->GetUsable())
-  {
-    this->ReportError(std::string("Cannot render the input: ") +
-      (report ? report->GetErrorMessage() : "no mesh") + ". Nothing is drawn.");
-    return false;
-  }
-
-  // The layout the user asked for, within the GPU's limits (or the user's lower ones): repacked
-  // only where the mesh changed (only the point texture when only the points moved).
-  const int userTexture = self->GetMaximumTextureSize();
-  const vtkIdType userBuffer = self->GetMaximumTextureBufferSize();
-  const int textureLimit =
-    userTexture > 0 ? std::min(userTexture, this->MaxTextureSize) : this->MaxTextureSize;
-  const vtkIdType bufferLimit = userBuffer > 0
-    ? std::min<vtkIdType>(userBuffer, this->MaxTextureBufferSize)
-    : this->MaxTextureBufferSize;
-  const int kind = self->GetMeshLayout();
-  if (kind != this->LayoutKind || !this->Layout || textureLimit != this->LayoutTextureLimit)
-  {
-    this->LayoutTextureLimit = textureLimit;
-    if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
-    {
-      // Rows of three texels per tetrahedron: a wide texture keeps the height small.
-      vtkNew<vtkTetMeshPaperLayout> paper;
-      paper->SetTextureWidth(std::min(textureLimit, 8192));
-      this->Layout = paper;
-    }
-    else
-    {
-      this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
-    }
-    this->Layout->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
-    this->Layout->AddObserver(vtkCommand::WarningEvent, this->Silencer);
-    this->LayoutKind = kind;
     this->MeshTextures.Invalidate();
-  }
-  vtkTetMeshLayout* layout = this->Layout;
-  layout->SetMaximumTextureSize(textureLimit);
-  layout->SetMaximumTextureBufferSize(bufferLimit);
-  this->TextureBufferLimit = bufferLimit;
-  if (!layout->Update(mesh))
-  {
-    this->ReportError(std::string("Cannot pack the mesh for this GPU: ") +
-      layout->GetErrorMessage() + ". Nothing is drawn.");
-    return false;
-  }
-  timer->StopTimer();
-  self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
-  if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
-  {
-    self->UpdateProgress(1.0);
-  }
-
-  if (mesh->GetMTime() != this->MeshTime)
-  {
-    this->MeshTime = mesh->GetMTime();
-    this->NumberOfTets = mesh->GetNumberOfTetrahedra();
-    this->HasCellScalars = mesh->GetHasCellScalars();
-    mesh->GetShift(this->Shift);
-    double bounds[6];
-    mesh->GetBounds(bounds);
-    for (int i = 0; i < 6; ++i)
-    {
-      this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
-    }
-    mesh->GetScalarRange(this->ScalarRange);
-    this->LongestEdge = ComputeLongestEdge(mesh);
-    const double volume =
-      (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
-    // The edge of a regular tetrahedron of the mean volume: a typical segment length.
-    this->TypicalEdge =
-      this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
   }
   return true;
 }
@@ -654,7 +495,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 {
   vtkIdType uploaded = 0;
   std::string error;
-  if (!this->MeshTextures.Update(window, this->Layout, this->Builder->GetMesh(), uploaded, error))
+  if (!this->MeshTextures.Update(
+        window, this->Mesh.GetLayout(), this->Mesh.GetMesh(), uploaded, error))
   {
     this->ReportError(error);
     return false;
@@ -672,7 +514,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkTiledRayCastStatistics* stats = self->Statistics;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  this->TransferFunction->Update(property, this->ScalarRange);
+  this->TransferFunction->Update(property, this->Mesh.ScalarRange);
   if (self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION &&
     self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND)
   {
@@ -699,7 +541,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
     // limits; rebuilt only when the transfer function, the lengths or the mode changed.
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
     this->ConfigureTable(mode);
-    table->Update(property, this->TransferFunction, this->ScalarRange);
+    table->Update(property, this->TransferFunction, this->Mesh.ScalarRange);
     std::string error;
     if (!this->IntegrationTextures.UpdateTable(window, table, mode, self, uploaded, error))
     {
@@ -729,16 +571,16 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ConfigureTable(int mode)
   table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
   table->SetMaximumSize(is3D ? this->Max3DTextureSize : this->MaxTextureSize);
   // Lengths are in world units: the volume's matrix stretches them by at most its norm.
-  table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
+  table->SetMaximumLength(this->Mesh.LongestEdge * this->Geometry.ObjectToWorldNorm);
   table->SetReferenceLength(
-    0.5 * this->TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
+    0.5 * this->Mesh.TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChooseIntegration(
   vtkVolumeProperty* property)
 {
-  vtkTetMesh* mesh = this->Builder->GetMesh();
+  vtkTetMesh* mesh = this->Mesh.GetMesh();
   const double norm = this->Geometry.ObjectToWorldNorm;
   const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
     static_cast<double>(mesh->GetMTime()), norm, this->Self->GetMaximumError(),
@@ -762,7 +604,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChooseIntegration(
     { vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D })
   {
     this->ConfigureTable(mode);
-    if (!this->Table->Update(property, this->TransferFunction, this->ScalarRange))
+    if (!this->Table->Update(property, this->TransferFunction, this->Mesh.ScalarRange))
     {
       return;
     }
@@ -791,9 +633,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
     self->GetEmptySpaceSkipping() && self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND;
   vtkIdType uploaded = 0;
   std::string error;
-  if (!this->VisibleMesh.Update(window, this->Builder->GetMesh(),
-        skip ? this->TransferFunction.GetPointer() : nullptr, this->TextureBufferLimit, uploaded,
-        error))
+  if (!this->VisibleMesh.Update(window, this->Mesh.GetMesh(),
+        skip ? this->TransferFunction.GetPointer() : nullptr, this->Mesh.TextureBufferLimit,
+        uploaded, error))
   {
     this->ReportError(error + ". Nothing is drawn.");
     return false;
@@ -813,8 +655,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
   vtkTiledRayCastShaderComposition::Inputs inputs;
   inputs.Window = window;
   inputs.Compute = this->UseCompute;
-  inputs.PaperLayout = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
-  inputs.CellScalars = this->HasCellScalars;
+  inputs.PaperLayout = this->Mesh.LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  inputs.CellScalars = this->Mesh.HasCellScalars;
   inputs.IntegrationMode = this->IntegrationMode();
   inputs.BlendMode = this->Self->GetBlendMode();
   inputs.Shading = this->Lighting.Enabled;
@@ -958,7 +800,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderP
 {
   this->MeshTextures.SetUniforms(p);
   this->VisibleMesh.SetUniforms(p);
-  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Layout))
+  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Mesh.GetLayout()))
   {
     p->SetUniformi("in_paperWidth", paper->GetTextureWidth());
   }
@@ -968,9 +810,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderP
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShaderProgram* p)
 {
   // Scalars and transfer-function nodes are shifted on the GPU (vtkTetMesh::GetScalarShift).
-  const double shift = vtkTetMesh::ComputeScalarShift(this->ScalarRange);
-  const float range[2] = { static_cast<float>(this->ScalarRange[0] - shift),
-    static_cast<float>(this->ScalarRange[1] - shift) };
+  const double shift = vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange);
+  const float range[2] = { static_cast<float>(this->Mesh.ScalarRange[0] - shift),
+    static_cast<float>(this->Mesh.ScalarRange[1] - shift) };
   const double* average = this->Self->GetAverageIPScalarRange();
   const float averageRange[2] = { static_cast<float>(std::max(average[0] - shift, -3.0e38)),
     static_cast<float>(std::min(average[1] - shift, 3.0e38)) };
@@ -1017,7 +859,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtk
 {
   const int mode = this->IntegrationMode();
   this->IntegrationTextures.SetUniforms(p, mode, this->TransferFunction, this->Table,
-    vtkTetMesh::ComputeScalarShift(this->ScalarRange));
+    vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange));
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
     this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {
@@ -1173,7 +1015,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   {
     return false;
   }
-  if (!this->Geometry.Compute(ren, vol, this->Shift, this->MeshBounds))
+  if (!this->Geometry.Compute(ren, vol, this->Mesh.Shift, this->Mesh.MeshBounds))
   {
     this->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return false;
@@ -1181,7 +1023,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   this->Lighting.Compute(ren, vol, self->BlendMode);
   this->GradientOpacity.Compute(property, self->BlendMode);
   this->WarnLighting();
-  if (!this->Geometry.ComputeClippingPlanes(self->ClippingPlanes, this->MeshBounds) &&
+  if (!this->Geometry.ComputeClippingPlanes(self->ClippingPlanes, this->Mesh.MeshBounds) &&
     !this->WarnedClippingPlanes)
   {
     vtkErrorWithObjectMacro(
@@ -1389,7 +1231,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   const vtkIdType meshBytes = impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes();
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
-    impl->NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->NumberOfTets : 0.0);
+    impl->Mesh.NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->Mesh.NumberOfTets : 0.0);
   stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
   stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");
