@@ -41,8 +41,7 @@
 #include "vtkTiledRayCastDeferredDraw.h"
 #include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
-#include "vtkTiledRayCastIntegrationChoice.h"
-#include "vtkTiledRayCastIntegrationTextures.h"
+#include "vtkTiledRayCastIntegration.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshBuild.h"
@@ -173,10 +172,7 @@ public:
   vtkTiledRayCastVisibleMesh VisibleMesh;
 
   // Transfer function.
-  vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
-  vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
-  vtkTiledRayCastIntegrationTextures IntegrationTextures;
-  vtkIdType TransferFunctionBytes = 0;
+  vtkTiledRayCastIntegration Integration;
 
   // The scene's depth, which ends the rays.
   vtkTiledRayCastOpaqueDepth OpaqueDepth;
@@ -207,27 +203,8 @@ public:
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
-  // The integration the shaders do: the mapper's setting, or partial pre-integration's node list
-  // under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates it).
-  // AUTOMATIC_INTEGRATION is the mode ChooseIntegration() took.
-  int IntegrationMode() const
-  {
-    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-    {
-      return vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-    }
-    const int mode = this->Self->GetIntegrationMode();
-    return mode == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION ? this->AutomaticMode : mode;
-  }
-  // The automatic mode's choice, made again when the transfer function, the mesh, the lengths
-  // or the budget changed.
-  vtkTiledRayCastIntegrationChoice Choice;
-  int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-  double PredictedError = 0.0;
-  std::vector<double> ChoiceKey;
-  void ChooseIntegration(vtkVolumeProperty* property);
-  // The table of a table mode, at the resolution and lengths it needs (not yet updated).
-  void ConfigureTable(int mode);
+  // The integration the shaders do (vtkTiledRayCastIntegration::GetMode).
+  int IntegrationMode() const { return this->Integration.GetMode(this->Self); }
   // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
   // GradientOpacity).
   void WarnLighting();
@@ -510,116 +487,23 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkVolumeProperty* property, vtkOpenGLRenderWindow* window)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastStatistics* stats = self->Statistics;
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  this->TransferFunction->Update(property, this->Mesh.ScalarRange);
-  if (self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION &&
-    self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND)
+  vtkTiledRayCastIntegration::Frame frame;
+  frame.Mapper = this->Self;
+  frame.Window = window;
+  frame.Mesh = this->Mesh.GetMesh();
+  std::copy(this->Mesh.ScalarRange, this->Mesh.ScalarRange + 2, frame.ScalarRange);
+  frame.LongestEdge = this->Mesh.LongestEdge;
+  frame.TypicalEdge = this->Mesh.TypicalEdge;
+  frame.ObjectToWorldNorm = this->Geometry.ObjectToWorldNorm;
+  frame.MaxTextureSize = this->MaxTextureSize;
+  frame.Max3DTextureSize = this->Max3DTextureSize;
+  std::string error;
+  if (!this->Integration.Update(frame, property, error))
   {
-    this->ChooseIntegration(property);
+    this->ReportError(error);
+    return false;
   }
-
-  vtkIdType uploaded = 0;
-  const int mode = this->IntegrationMode();
-  stats->SetIntegrationMode(mode);
-  stats->SetPredictedError(
-    self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION
-      ? this->PredictedError
-      : -1.0);
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
-  {
-    this->IntegrationTextures.UpdateNodes(window, this->TransferFunction, uploaded);
-    this->TransferFunctionBytes = static_cast<vtkIdType>(
-      this->TransferFunction->GetNodeTexels().size() * sizeof(float) + 512 * 512 * 4);
-    stats->SetPreIntegrationTableSize(0, 0, 0);
-  }
-  else
-  {
-    // A table of the whole transfer function, at the resolution it needs, within the GPU's
-    // limits; rebuilt only when the transfer function, the lengths or the mode changed.
-    vtkTiledRayCastPreIntegrationTable* table = this->Table;
-    this->ConfigureTable(mode);
-    table->Update(property, this->TransferFunction, this->Mesh.ScalarRange);
-    std::string error;
-    if (!this->IntegrationTextures.UpdateTable(window, table, mode, self, uploaded, error))
-    {
-      this->ReportError(error);
-      return false;
-    }
-    this->TransferFunctionBytes = table->GetNumberOfBytes();
-    int size[3];
-    table->GetSize(size);
-    stats->SetPreIntegrationTableSize(size);
-  }
-  timer->StopTimer();
-  stats->SetTransferFunctionBuildTime(timer->GetElapsedTime());
-  stats->SetNumberOfTransferFunctionNodes(this->TransferFunction->GetNumberOfNodes());
-  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ConfigureTable(int mode)
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastPreIntegrationTable* table = this->Table;
-  const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
-  table->SetDimension(is3D ? 3 : 2);
-  table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
-  table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
-  table->SetMaximumSize(is3D ? this->Max3DTextureSize : this->MaxTextureSize);
-  // Lengths are in world units: the volume's matrix stretches them by at most its norm.
-  table->SetMaximumLength(this->Mesh.LongestEdge * this->Geometry.ObjectToWorldNorm);
-  table->SetReferenceLength(
-    0.5 * this->Mesh.TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChooseIntegration(
-  vtkVolumeProperty* property)
-{
-  vtkTetMesh* mesh = this->Mesh.GetMesh();
-  const double norm = this->Geometry.ObjectToWorldNorm;
-  const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
-    static_cast<double>(mesh->GetMTime()), norm, this->Self->GetMaximumError(),
-    static_cast<double>(this->Self->GetPreIntegrationTableScalarSize()),
-    static_cast<double>(this->Self->GetPreIntegrationTableLengthSize()) };
-  if (key == this->ChoiceKey)
-  {
-    return;
-  }
-  this->ChoiceKey = key;
-  // Cheapest first (measured on the H200: the 2D table, the 3D table, partial pre-integration);
-  // each table is kept if its predicted error is within the budget.
-  this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-  this->PredictedError = 0.0;
-  this->Choice.SampleSegments(mesh, norm);
-  if (!this->Choice.SetProperty(property))
-  {
-    return;
-  }
-  for (int mode :
-    { vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D })
-  {
-    this->ConfigureTable(mode);
-    if (!this->Table->Update(property, this->TransferFunction, this->Mesh.ScalarRange))
-    {
-      return;
-    }
-    const double error = this->Choice.PredictError(this->Table);
-    vtkDebugWithObjectMacro(this->Self, << "Automatic integration: "
-                                        << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(mode)
-                                        << " predicted " << error << "/255 (worst segment "
-                                        << this->Choice.GetWorstSegmentError() << ")");
-    if (error <= this->Self->GetMaximumError())
-    {
-      this->AutomaticMode = mode;
-      this->PredictedError = error;
-      return;
-    }
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -634,7 +518,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
   vtkIdType uploaded = 0;
   std::string error;
   if (!this->VisibleMesh.Update(window, this->Mesh.GetMesh(),
-        skip ? this->TransferFunction.GetPointer() : nullptr, this->Mesh.TextureBufferLimit,
+        skip ? this->Integration.GetTransferFunction() : nullptr, this->Mesh.TextureBufferLimit,
         uploaded, error))
   {
     this->ReportError(error + ". Nothing is drawn.");
@@ -749,7 +633,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
     this->Fragment.ActivateTextures(activate);
   }
   ActivateAll(textures, activate);
-  this->IntegrationTextures.ActivateTextures(this->IntegrationMode(), activate);
+  this->Integration.ActivateTextures(this->IntegrationMode(), activate);
   this->VisibleMesh.ActivateTextures(activate);
 }
 
@@ -820,8 +704,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
   p->SetUniform2f("in_blendScalarRange", range);
   p->SetUniform2f("in_averageRange", averageRange);
   // The unit distance the node list's attenuations were divided by: opacity = tau * distance.
-  p->SetUniformf(
-    "in_opacityUnitDistance", static_cast<float>(this->TransferFunction->GetUnitDistance()));
+  p->SetUniformf("in_opacityUnitDistance",
+    static_cast<float>(this->Integration.GetTransferFunction()->GetUnitDistance()));
 }
 
 //------------------------------------------------------------------------------
@@ -858,8 +742,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShad
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->IntegrationMode();
-  this->IntegrationTextures.SetUniforms(p, mode, this->TransferFunction, this->Table,
-    vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange));
+  this->Integration.SetUniforms(p, mode, vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange));
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
     this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {
@@ -883,14 +766,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->Compute.ReleaseGraphicsResources(window);
   this->MeshTextures.ReleaseGraphicsResources(this->CheckedWindow);
   this->VisibleMesh.ReleaseGraphicsResources(window);
-  this->IntegrationTextures.ReleaseGraphicsResources(window);
+  this->Integration.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
   this->OpaqueDepth.ReleaseGraphicsResources(window);
   this->UseCompute = false;
   this->Composition.Reset();
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
-  this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
 }
 
@@ -1232,7 +1114,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
     impl->Mesh.NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->Mesh.NumberOfTets : 0.0);
-  stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
+  stats->SetTransferFunctionBytes(impl->Integration.GetBytes());
   stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");
 
