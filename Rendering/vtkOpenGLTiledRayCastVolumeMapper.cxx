@@ -325,48 +325,14 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
+  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
 
   std::string error;
-  if (!this->Compute.BeginFrame(frame, stats, error))
-  {
-    window->GetState()->PopFramebufferBindings();
-    this->ReportError(error);
-    return false;
-  }
-  {
-    vtkTiledRayCastDebugEvent event("ListEntries");
-    this->Timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
-    this->Compute.ListEntries(frame, *this);
-    this->Timers.Stop(vtkTiledRayCastPhaseTimers::FirstHit);
-  }
-  {
-    vtkTiledRayCastDebugEvent event("Traverse");
-    this->Timers.Start(vtkTiledRayCastPhaseTimers::RayCasting);
-    this->Compute.Traverse(frame, *this);
-    this->Timers.Stop(vtkTiledRayCastPhaseTimers::RayCasting);
-  }
-  const bool ok = this->Compute.FinishEntries(frame, *this, stats, error);
-
-  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
-  vtkOpenGLState* state = window->GetState();
-  state->PopFramebufferBindings();
-  if (!ok)
+  if (!this->Compute.Render(frame, *this, this->Timers, stats, error))
   {
     this->ReportError(error);
     return false;
   }
-  vtkTiledRayCastDebugEvent event("Composite");
-  this->Timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
-  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Compute.Composite(frame, *this);
-  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
-
-  stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
-  stats->SetNumberOfRayCastPasses(1);
-  stats->GetPassesPerTile().clear();
-  stats->FinishTilePasses();
   vtkInternalsCheckErrorMacro("failed after the compute pipeline");
   return true;
 }
