@@ -10,30 +10,18 @@
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 
-#include "vtkCamera.h"
-#include "vtkDataArray.h"
 #include "vtkInformation.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
-#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
-#include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
-#include "vtkTetScalarSelection.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
@@ -48,7 +36,6 @@
 #include "vtkTiledRayCastMeshTextures.h"
 #include "vtkTiledRayCastOpaqueDepth.h"
 #include "vtkTiledRayCastPhaseTimers.h"
-#include "vtkTiledRayCastPreIntegrationTable.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastSampleDistance.h"
 #include "vtkTiledRayCastShaderComposition.h"
@@ -64,10 +51,7 @@
 
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <limits>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
