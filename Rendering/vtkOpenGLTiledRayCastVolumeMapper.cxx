@@ -10,91 +10,48 @@
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 
-#include "vtkCallbackCommand.h"
-#include "vtkCamera.h"
-#include "vtkDataArray.h"
-#include "vtkDualDepthPeelingPass.h"
 #include "vtkInformation.h"
-#include "vtkInformationObjectBaseVectorKey.h"
-#include "vtkMath.h"
-#include "vtkMatrix4x4.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLActor.h"
-#include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLError.h"
-#include "vtkOpenGLFramebufferObject.h"
-#include "vtkOpenGLRenderPass.h"
-#include "vtkOpenGLRenderTimer.h"
-#include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkOpenGLVertexArrayObject.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPropCollection.h"
 #include "vtkRenderer.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkShaderProgram.h"
-#include "vtkSmartPointer.h"
 #include "vtkTetMesh.h"
-#include "vtkTetMeshBuilder.h"
-#include "vtkTetMeshCompactLayout.h"
-#include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
-#include "vtkTetMeshValidationReport.h"
-#include "vtkTetScalarSelection.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastDebugEvent.h"
+#include "vtkTiledRayCastDeferredDraw.h"
+#include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
-#include "vtkTiledRayCastIntegrationChoice.h"
+#include "vtkTiledRayCastIntegration.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastLighting.h"
-#include "vtkTiledRayCastMeshInput.h"
-#include "vtkTiledRayCastOcclusionQueries.h"
-#include "vtkTiledRayCastPreIntegrationTable.h"
+#include "vtkTiledRayCastMeshBuild.h"
+#include "vtkTiledRayCastMeshTextures.h"
+#include "vtkTiledRayCastOpaqueDepth.h"
+#include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastSampleDistance.h"
+#include "vtkTiledRayCastShaderComposition.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
 #include "vtkTiledRayCastVisibleMesh.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
-#include "vtkWeakPointer.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
 
-#include "vtkTiledRayCastBoundaryFaceFS.h"
-#include "vtkTiledRayCastBoundaryFaceVS.h"
-#include "vtkTiledRayCastCommonFS.h"
-#include "vtkTiledRayCastCompactLayout.h"
-#include "vtkTiledRayCastCompositeFS.h"
-#include "vtkTiledRayCastCopyFS.h"
-#include "vtkTiledRayCastCountFS.h"
-#include "vtkTiledRayCastGradientOpacity.h"
-#include "vtkTiledRayCastNearSliceFS.h"
-#include "vtkTiledRayCastNearSliceGS.h"
-#include "vtkTiledRayCastNearSliceVS.h"
-#include "vtkTiledRayCastPaperLayout.h"
-#include "vtkTiledRayCastBlendModes.h"
-#include "vtkTiledRayCastPartialPreIntegration.h"
-#include "vtkTiledRayCastPreIntegration2D.h"
-#include "vtkTiledRayCastPreIntegration3D.h"
-#include "vtkTiledRayCastQuadVS.h"
-#include "vtkTiledRayCastShading.h"
-#include "vtkTiledRayCastTraversalFS.h"
-#include "vtkTiledRayCastWalk.h"
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <limits>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -138,182 +95,25 @@ const char* FragmentPipelineVersion(vtkOpenGLRenderWindow* window)
   return nullptr;
 }
 
-// Ray status codes, as in vtkTiledRayCastCommonFS.glsl.
-enum RayStatus
-{
-  StatusMiss = 0,
-  StatusActive = 1,
-  StatusWaiting = 2,
-  StatusDoneDepth = 3,
-  StatusDoneOpaque = 4
-};
-
-// GPU phases timed separately.
-enum Phase
-{
-  PhaseFirstHit = 0,
-  PhasePeeling,
-  PhaseRayCasting,
-  PhaseCompositing,
-  NumberOfPhases
-};
-
-// The depth at which tile rectangles are drawn: halfway, so that the early-z marks of the
-// Z-update pass (0 for finished rays, 1 for active ones) cull or pass them.
-const float RectangleDepth = 0.0f; // NDC, window depth 0.5
-
 // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
 // place: the next layer must then have a larger key than the last (both pipelines' peeling).
 const float PeelEpsilon = 2e-6f;
 
-// A name in GL debuggers (apitrace, RenderDoc) around a phase of the render.
-class ScopedDebugEvent
+void ActivateAll(const std::vector<vtkTextureObject*>& textures, bool activate)
 {
-public:
-  explicit ScopedDebugEvent(const char* name)
-    : Name(name)
+  for (vtkTextureObject* t : textures)
   {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(
-      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " begin");
-  }
-  ~ScopedDebugEvent()
-  {
-    vtkOpenGLRenderUtilities::MarkDebugEvent(
-      std::string("vtkOpenGLTiledRayCastVolumeMapper::") + this->Name + " end");
-  }
-  ScopedDebugEvent(const ScopedDebugEvent&) = delete;
-  void operator=(const ScopedDebugEvent&) = delete;
-
-private:
-  const char* Name;
-};
-
-// A screen tile, in pixels of the viewport.
-struct Tile
-{
-  int X0, Y0, X1, Y1;
-  int Parity = 0;                 // which of the two ping-pong target sets holds its latest state
-  int Passes = 0;                 // ray-casting passes run this frame
-  bool Running = false;           // still has rays to advance in the current layer
-  unsigned int LastQuery = 0;     // latest count of the tile's active rays
-  unsigned int PreviousQuery = 0; // the count before it
-};
-
-// A program of the window's shader cache (the cache owns it) and the empty vertex array every
-// draw of the mapper binds: vertices are generated from gl_VertexID.
-struct Program
-{
-  vtkShaderProgram* Shader = nullptr;
-  vtkNew<vtkOpenGLVertexArrayObject> VAO;
-  std::string Key;
-
-  void Release(vtkWindow*)
-  {
-    this->Shader = nullptr;
-    this->VAO->ReleaseGraphicsResources();
-    this->Key.clear();
-  }
-};
-
-// GPU time of a phase that runs in several pieces (ray casting and peeling interleave).
-class PhaseTimer
-{
-public:
-  void Start()
-  {
-    if (this->Used == this->Segments.size())
+    if (activate)
     {
-      this->Segments.emplace_back(new vtkOpenGLRenderTimer);
+      t->Activate();
     }
-    this->Segments[this->Used]->Start();
-  }
-  void Stop() { this->Segments[this->Used++]->Stop(); }
-  bool Ready() const
-  {
-    for (size_t i = 0; i < this->Used; ++i)
+    else
     {
-      if (!this->Segments[i]->Ready())
-      {
-        return false;
-      }
+      t->Deactivate();
     }
-    return true;
   }
-  // Zero for segments whose results are not there yet (vtkOpenGLRenderTimer does not wait).
-  double GetMilliseconds()
-  {
-    double ms = 0;
-    for (size_t i = 0; i < this->Used; ++i)
-    {
-      ms += this->Segments[i]->GetElapsedMilliseconds();
-    }
-    return ms;
-  }
-  void Reset() { this->Used = 0; }
-  void ReleaseGraphicsResources()
-  {
-    for (auto& t : this->Segments)
-    {
-      t->ReleaseGraphicsResources();
-    }
-    this->Segments.clear();
-    this->Used = 0;
-  }
-
-private:
-  std::vector<std::unique_ptr<vtkOpenGLRenderTimer>> Segments;
-  size_t Used = 0;
-};
-
-// A mesh array on the GPU.
-struct MeshTexture
-{
-  std::string Uniform;
-  int Kind = -1; // vtkTetMeshLayout::ArrayKind: a texture buffer's name never becomes a 2D texture
-  vtkNew<vtkOpenGLBufferObject> Buffer;
-  vtkNew<vtkTextureObject> Texture;
-  vtkIdType Bytes = 0;
-};
-
-std::string Substituted(
-  std::string source, const std::vector<std::pair<std::string, std::string>>& replacements)
-{
-  for (const auto& r : replacements)
-  {
-    vtkShaderProgram::Substitute(source, r.first, r.second, true);
-  }
-  return source;
 }
-// The longest edge of any tetrahedron: the longest segment a ray can have inside one.
-double ComputeLongestEdge(vtkTetMesh* mesh)
-{
-  const double* points = mesh->GetPoints();
-  const uint32_t* tets = mesh->GetTetPoints();
-  vtkSMPThreadLocal<double> longest(0.0);
-  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double& local = longest.Local();
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const uint32_t* ids = tets + 4 * t;
-        for (int i = 0; i < 4; ++i)
-        {
-          for (int j = i + 1; j < 4; ++j)
-          {
-            local = std::max(
-              local, vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
-          }
-        }
-      }
-    });
-  double result = 0.0;
-  for (double v : longest)
-  {
-    result = std::max(result, v);
-  }
-  return std::sqrt(result);
-}
+
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -322,24 +122,15 @@ class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastPr
 public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
     : Self(self)
+    , Deferred(self)
+    , Mesh(self)
   {
-    // The builder and the layouts are the mapper's own parts: their errors and warnings end
-    // up in the validation report and in the mapper's one message about them, so that a user
-    // (or a test) hears of a problem once and from the object they hold.
-    this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
-    this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
-    this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
-    // The builder's progress is the mapper's (0 to 0.9, packing the layout the rest), so that
-    // an application can show it for a mesh that takes seconds to build.
-    this->BuildProgress->SetClientData(self);
-    this->BuildProgress->SetCallback([](vtkObject*, unsigned long, void* mapper, void* fraction) {
-      static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper)->UpdateProgress(
-        0.9 * *static_cast<double*>(fraction));
-    });
-    this->Builder->AddObserver(vtkCommand::ProgressEvent, this->BuildProgress);
   }
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
+
+  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
+  vtkTiledRayCastDeferredDraw Deferred;
 
   // Context: checked once per window.
   vtkOpenGLRenderWindow* CheckedWindow = nullptr;
@@ -351,100 +142,37 @@ public:
   int Max3DTextureSize = 0;
   bool ComputeSupported = false; // OpenGL 4.3
 
-  // The pipeline of this frame: compute (vtkTiledRayCastComputePipeline) or fragment (below).
+  // The pipeline of this frame: compute or fragment.
   bool UseCompute = false;
   vtkTiledRayCastComputePipeline Compute;
+  vtkTiledRayCastFragmentPipeline Fragment;
+  // What the pipeline's programs were last built from.
+  vtkTiledRayCastShaderComposition Composition;
 
-  // CPU mesh and its GPU layout.
-  vtkNew<vtkCallbackCommand> Silencer;
-  vtkNew<vtkCallbackCommand> BuildProgress;
-  vtkNew<vtkTetMeshBuilder> Builder;
-  vtkTiledRayCastMeshInput Input;
-  vtkSmartPointer<vtkTetMeshLayout> Layout;
-  int LayoutKind = -1;
-  int LayoutTextureLimit = 0;
-  vtkMTimeType MeshTime = 0;
-  vtkMTimeType ReportedTime = 0;
-  std::vector<MeshTexture*> MeshTextures;
+  // CPU mesh and its layout.
+  vtkTiledRayCastMeshBuild Mesh;
+  vtkTiledRayCastMeshTextures MeshTextures;
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
   vtkTiledRayCastVisibleMesh VisibleMesh;
-  vtkIdType TextureBufferLimit = 0;
-  vtkIdType NumberOfTets = 0;
-  vtkMTimeType UploadedLayoutTime = 0;
-  vtkIdType MeshBytes = 0;
-  bool HasCellScalars = false;
-  double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
-  double Shift[3] = { 0, 0, 0 };
-  double ScalarRange[2] = { 0, 1 };
-  double LongestEdge = 0; // in object coordinates
-  double TypicalEdge = 0; // idem
 
   // Transfer function.
-  vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
-  vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
-  vtkNew<vtkOpenGLBufferObject> NodeBuffer;
-  vtkNew<vtkTextureObject> NodeTexture;
-  vtkNew<vtkTextureObject> PsiTexture;
-  vtkNew<vtkTextureObject> TableTexture;
-  vtkMTimeType UploadedNodesTime = 0;
-  vtkMTimeType UploadedTableTime = 0;
-  int UploadedTableMode = -1;
-  vtkIdType TransferFunctionBytes = 0;
+  vtkTiledRayCastIntegration Integration;
 
-  // Render targets: two ping-pong sets of (state, colour, entry) and a shared depth buffer.
-  vtkNew<vtkTextureObject> State[2];
-  vtkNew<vtkTextureObject> Color[2];
-  vtkNew<vtkTextureObject> Entry[2];
-  vtkNew<vtkTextureObject> Depth;
-  vtkNew<vtkTextureObject> OpaqueDepth;
-  vtkNew<vtkOpenGLFramebufferObject> OpaqueDepthFramebuffer;
-  unsigned int OpaqueDepthFormat = 0;
-  vtkNew<vtkOpenGLFramebufferObject> Framebuffer[2];
-  // The targets only grow: renderers of different sizes in one window share them, each using
-  // the lower-left ImageSize pixels, and nothing is reallocated from one renderer to the next.
-  int TargetSize[2] = { 0, 0 };
+  // The scene's depth, which ends the rays.
+  vtkTiledRayCastOpaqueDepth OpaqueDepth;
   // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
   int ImageSize[2] = { 0, 0 };
   vtkTiledRayCastSampleDistance SampleDistance;
   double FrameSampleDistance = 1.0;
   double TimedSampleDistance = 1.0; // of the frame the timers in flight measure
 
-  // Programs.
-  Program FirstHitProgram, PeelProgram, NearSliceProgram, TraversalProgram, CopyProgram,
-    CountProgram, CompositeProgram;
-
-  // Queries and timers.
-  vtkTiledRayCastOcclusionQueries Queries;
-  PhaseTimer PhaseTimers[NumberOfPhases];
-  PhaseTimer TotalTimer;
-  bool TimersPending = false;
-  bool TimingThisFrame = false;
-  void StartPhase(PhaseTimer& t)
-  {
-    if (this->TimingThisFrame)
-    {
-      t.Start();
-    }
-  }
-  void StopPhase(PhaseTimer& t)
-  {
-    if (this->TimingThisFrame)
-    {
-      t.Stop();
-    }
-  }
-  unsigned int NearPlaneQuery = 0;
+  // GPU timers.
+  vtkTiledRayCastPhaseTimers Timers;
 
   // Warnings given once.
   bool WarnedTranslucentGeometry = false;
   bool WarnedBlendMode = false;
   bool WarnedClippingPlanes = false;
-  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
-  vtkWeakPointer<vtkRenderer> DeferredRenderer;
-  vtkWeakPointer<vtkVolume> DeferredVolume;
-  unsigned long DeferredObserver = 0;
-  bool DeferredPending = false;
-  bool DrawingDeferred = false;
   bool WarnedPositionalLights = false;
   bool WarnedIgnoredLights = false;
   bool WarnedShadedCellScalars = false;
@@ -456,47 +184,11 @@ public:
   vtkTiledRayCastFrameGeometry Geometry;
   vtkTiledRayCastLighting Lighting;
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
-  std::vector<Tile> Tiles;
-  // Ray-casting passes issued, and the tile count they were conditioned on: the GPU skipped
-  // them when that count was zero.
-  struct PassBlock
-  {
-    size_t TileIndex;
-    unsigned int Condition;
-    int Passes;
-  };
-  std::vector<PassBlock> PassBlocks;
   int Viewport[4] = { 0, 0, 0, 0 };
 
   void ReportError(const std::string& message);
-  // The integration the shaders do: the mapper's setting, or partial pre-integration's node list
-  // under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates it).
-  // AUTOMATIC_INTEGRATION is the mode ChooseIntegration() took.
-  int IntegrationMode() const
-  {
-    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-    {
-      return vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-    }
-    const int mode = this->Self->GetIntegrationMode();
-    return mode == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION ? this->AutomaticMode : mode;
-  }
-  // The automatic mode's choice, made again when the transfer function, the mesh, the lengths
-  // or the budget changed.
-  vtkTiledRayCastIntegrationChoice Choice;
-  int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-  double PredictedError = 0.0;
-  std::vector<double> ChoiceKey;
-  void ChooseIntegration(vtkVolumeProperty* property);
-  // The table of a table mode, at the resolution and lengths it needs (not yet updated).
-  void ConfigureTable(int mode);
-  // Draws the volume when `renderer` has finished its frame (EndEvent) instead of now.
-  void DeferToEndOfFrame(vtkRenderer* renderer, vtkVolume* volume);
-  static void DrawDeferred(vtkObject* renderer, unsigned long, void* mapper, void*);
-  void StopDeferring();
-  // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
-  // then marks the volume with itself as a render pass.
-  static bool InsideVolumetricPeeling(vtkVolume* volume);
+  // The integration the shaders do (vtkTiledRayCastIntegration::GetMode).
+  int IntegrationMode() const { return this->Integration.GetMode(this->Self); }
   // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
   // GradientOpacity).
   void WarnLighting();
@@ -508,11 +200,9 @@ public:
   bool UpdatePrograms(vtkOpenGLRenderWindow* window);
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
   bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
-  void MakeTiles();
   void ReadTimers(bool wait);
 
   void ActivateTextures(bool activate);
-  vtkShaderProgram* Use(vtkOpenGLRenderWindow* window, Program& program);
   bool ChoosePipeline();
   void SetFrameUniforms(vtkShaderProgram* program) override;
   void SetMeshUniforms(vtkShaderProgram* program) override;
@@ -524,31 +214,27 @@ public:
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
-    return static_cast<int>(std::min<vtkIdType>(this->NumberOfTets + 1024, VTK_INT_MAX));
+    return static_cast<int>(std::min<vtkIdType>(this->Mesh.NumberOfTets + 1024, VTK_INT_MAX));
   }
   // The GPU work of a frame in each pipeline, from the first hit to compositing (the caller
   // has pushed the framebuffer bindings; both pop them before compositing).
   bool RenderCompute(vtkOpenGLRenderWindow* window);
   bool RenderFragment(vtkOpenGLRenderWindow* window);
-  void SetTargetUniforms(vtkShaderProgram* program, int parity);
   // Compositing: rays per viewport pixel along x and y (1 at an image sample distance of 1).
   void SetSampleScaleUniforms(vtkShaderProgram* program) override;
-  void DrawRectangle(Program& program, int x0, int y0, int x1, int y1);
-  void DrawViewport(Program& program);
 
-  void BindTargets(vtkOpenGLState* state, int parity);
-  bool RenderFirstHit(vtkOpenGLRenderWindow* window);
-  unsigned int Peel(vtkOpenGLRenderWindow* window);
-  void RayCastLayer(vtkOpenGLRenderWindow* window);
-  void CountActiveRays(vtkOpenGLRenderWindow* window, Tile& tile);
-  void CopyTile(vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive);
-  void MakeTilesIdentical(vtkOpenGLRenderWindow* window);
-  void Composite(vtkOpenGLRenderWindow* window);
-  void FinishStatistics();
+  // The steps of Render.
+  void WarnTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol);
+  bool CheckBlendMode();
+  // The CPU work of a frame (only what changed) and the GPU resources it needs; false when
+  // nothing is drawn. Sets the number of rays along x and y.
+  bool PrepareFrame(vtkRenderer* ren, vtkVolume* vol, vtkDataObject* input,
+    vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2]);
+  // The GPU work of a frame, in the OpenGL state it restores.
+  bool DrawFrame(vtkOpenGLRenderWindow* window, const int rays[2]);
+  void WarnAfterFrame();
 
   void ReleaseGraphicsResources(vtkWindow* window);
-  void ReleaseFragmentTargets(vtkWindow* window);
-  void ClearMeshTextures();
 };
 
 //------------------------------------------------------------------------------
@@ -565,10 +251,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
     (requested == vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE && this->ComputeSupported);
   if (compute != this->UseCompute && this->CheckedWindow)
   {
+    this->Composition.Reset();
     // The other pipeline's per-pixel memory is no longer needed.
     if (compute)
     {
-      this->ReleaseFragmentTargets(this->CheckedWindow);
+      this->Fragment.ReleaseTargets(this->CheckedWindow);
     }
     else
     {
@@ -582,47 +269,24 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRenderWindow* window)
 {
-  this->Queries.Recycle();
-  this->PassBlocks.clear();
-  this->NearPlaneQuery = 0;
-  this->MakeTiles();
-
-  this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
-  this->RenderFirstHit(window);
-  this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
-  // Layers: ray cast, then peel the next boundary layer behind where rays left the mesh, until
-  // a peel finds no re-entry.
-  int layers = 1;
-  int peels = 0;
-  const int maxLayers = 1 << 16;
-  while (true)
-  {
-    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
-    this->RayCastLayer(window);
-    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
-    if (layers >= maxLayers)
-    {
-      vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-      vtkWarningWithObjectMacro(self, "Stopped after " << maxLayers << " boundary layers.");
-      break;
-    }
-    this->StartPhase(this->PhaseTimers[PhasePeeling]);
-    const unsigned int reentered = this->Peel(window);
-    this->StopPhase(this->PhaseTimers[PhasePeeling]);
-    ++peels;
-    if (!reentered)
-    {
-      break;
-    }
-    ++layers;
-  }
-  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
-  this->Composite(window);
-  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
-  this->FinishStatistics();
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetNumberOfLayers(layers);
-  stats->SetNumberOfPeelPasses(peels);
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastFragmentPipeline::Frame frame;
+  frame.Window = window;
+  frame.Reporter = self;
+  frame.Width = this->ImageSize[0];
+  frame.Height = this->ImageSize[1];
+  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
+  frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
+  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
+  frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
+  frame.Mirrored = this->Geometry.Mirrored;
+  frame.MaximumSteps = this->GetMaximumSteps();
+  frame.PeelEpsilon = PeelEpsilon;
+  frame.TileSize = self->GetTileSize();
+  frame.TetsPerPass = self->GetTetsPerPass();
+  frame.OcclusionQueryInterval = self->GetOcclusionQueryInterval();
+  frame.MaximumPassesPerLayer = self->GetMaximumNumberOfPassesPerLayer();
+  this->Fragment.Render(frame, *this, this->Timers, self->Statistics);
   return true;
 }
 
@@ -635,7 +299,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.Width = this->ImageSize[0];
   frame.Height = this->ImageSize[1];
   frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  frame.NumberOfTetrahedra = this->NumberOfTets;
+  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
   frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
   frame.Mirrored = this->Geometry.Mirrored;
   frame.MaximumSteps = this->GetMaximumSteps();
@@ -645,48 +309,14 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
+  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
 
   std::string error;
-  if (!this->Compute.BeginFrame(frame, stats, error))
-  {
-    window->GetState()->PopFramebufferBindings();
-    this->ReportError(error);
-    return false;
-  }
-  {
-    ScopedDebugEvent event("ListEntries");
-    this->StartPhase(this->PhaseTimers[PhaseFirstHit]);
-    this->Compute.ListEntries(frame, *this);
-    this->StopPhase(this->PhaseTimers[PhaseFirstHit]);
-  }
-  {
-    ScopedDebugEvent event("Traverse");
-    this->StartPhase(this->PhaseTimers[PhaseRayCasting]);
-    this->Compute.Traverse(frame, *this);
-    this->StopPhase(this->PhaseTimers[PhaseRayCasting]);
-  }
-  const bool ok = this->Compute.FinishEntries(frame, *this, stats, error);
-
-  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
-  vtkOpenGLState* state = window->GetState();
-  state->PopFramebufferBindings();
-  if (!ok)
+  if (!this->Compute.Render(frame, *this, this->Timers, stats, error))
   {
     this->ReportError(error);
     return false;
   }
-  ScopedDebugEvent event("Composite");
-  this->StartPhase(this->PhaseTimers[PhaseCompositing]);
-  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Compute.Composite(frame, *this);
-  this->StopPhase(this->PhaseTimers[PhaseCompositing]);
-
-  stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
-  stats->SetNumberOfRayCastPasses(1);
-  stats->GetPassesPerTile().clear();
-  stats->FinishTilePasses();
   vtkInternalsCheckErrorMacro("failed after the compute pipeline");
   return true;
 }
@@ -701,71 +331,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::str
     vtkErrorWithObjectMacro(self, << message);
     this->LastError = message;
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DeferToEndOfFrame(
-  vtkRenderer* renderer, vtkVolume* volume)
-{
-  if (renderer != this->DeferredRenderer)
-  {
-    this->StopDeferring();
-    vtkNew<vtkCallbackCommand> callback;
-    callback->SetCallback(&vtkInternals::DrawDeferred);
-    callback->SetClientData(this->Self);
-    this->DeferredObserver = renderer->AddObserver(vtkCommand::EndEvent, callback);
-    this->DeferredRenderer = renderer;
-  }
-  this->DeferredVolume = volume;
-  this->DeferredPending = true;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawDeferred(
-  vtkObject* renderer, unsigned long, void* mapper, void*)
-{
-  auto* self = static_cast<vtkOpenGLTiledRayCastVolumeMapper*>(mapper);
-  vtkInternals* impl = self->Impl;
-  vtkVolume* volume = impl->DeferredVolume;
-  if (!impl->DeferredPending || !volume)
-  {
-    return;
-  }
-  impl->DeferredPending = false;
-  impl->DrawingDeferred = true;
-  self->Render(static_cast<vtkRenderer*>(renderer), volume);
-  impl->DrawingDeferred = false;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::StopDeferring()
-{
-  if (vtkRenderer* renderer = this->DeferredRenderer)
-  {
-    renderer->RemoveObserver(this->DeferredObserver);
-  }
-  this->DeferredRenderer = nullptr;
-  this->DeferredVolume = nullptr;
-  this->DeferredPending = false;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::InsideVolumetricPeeling(vtkVolume* volume)
-{
-  vtkInformation* keys = volume->GetPropertyKeys();
-  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
-  if (!keys || !keys->Has(passes))
-  {
-    return false;
-  }
-  for (int i = 0; i < passes->Length(keys); ++i)
-  {
-    if (vtkDualDepthPeelingPass::SafeDownCast(passes->Get(keys, i)))
-    {
-      return true;
-    }
-  }
-  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -796,7 +361,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
         << " nodes: it is sampled (linear between samples).");
     this->WarnedGradientOpacity = true;
   }
-  if (lighting.Enabled && this->HasCellScalars && !this->WarnedShadedCellScalars)
+  if (lighting.Enabled && this->Mesh.HasCellScalars && !this->WarnedShadedCellScalars)
   {
     vtkWarningWithObjectMacro(self, "Shading cell scalars: they are constant per cell, their "
                                     "gradient is zero, so only the ambient term lights them.");
@@ -838,221 +403,31 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRend
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTetMeshBuilder* builder = this->Builder;
-  builder->SetSpatialOrdering(self->GetSpatialOrdering());
-  // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
-  // scalar selection set for it.
-  std::string inputError;
-  vtkDataSet* input = this->Input.Prepare(self, dataObject, property, builder, inputError);
-  if (!input)
+  std::string error;
+  if (!this->Mesh.Update(dataObject, property, this->MaxTextureSize, this->MaxTextureBufferSize,
+        error))
   {
-    this->ReportError(inputError + ". Nothing is drawn.");
+    this->ReportError(error);
     return false;
   }
-
-  // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  vtkTetMesh* mesh = builder->Build(input);
-  vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
-  if (report)
+  if (this->Mesh.TakeNewLayout())
   {
-    this->Input.ReportBlocks(report);
-  }
-  if (report && report->GetMTime() > this->ReportedTime)
-  {
-    self->ValidationReport->DeepCopy(report);
-    this->ReportedTime = report->GetMTime();
-    if (report->GetUsable() && report->HasProblems())
-    {
-      vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
-    }
-  }
-  if (!report || !report->GetUsable())
-  {
-    this->ReportError(std::string("Cannot render the input: ") +
-      (report ? report->GetErrorMessage() : "no mesh") + ". Nothing is drawn.");
-    return false;
-  }
-
-  // The layout the user asked for, within the GPU's limits (or the user's lower ones): repacked
-  // only where the mesh changed (only the point texture when only the points moved).
-  const int userTexture = self->GetMaximumTextureSize();
-  const vtkIdType userBuffer = self->GetMaximumTextureBufferSize();
-  const int textureLimit =
-    userTexture > 0 ? std::min(userTexture, this->MaxTextureSize) : this->MaxTextureSize;
-  const vtkIdType bufferLimit = userBuffer > 0
-    ? std::min<vtkIdType>(userBuffer, this->MaxTextureBufferSize)
-    : this->MaxTextureBufferSize;
-  const int kind = self->GetMeshLayout();
-  if (kind != this->LayoutKind || !this->Layout || textureLimit != this->LayoutTextureLimit)
-  {
-    this->LayoutTextureLimit = textureLimit;
-    if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
-    {
-      // Rows of three texels per tetrahedron: a wide texture keeps the height small.
-      vtkNew<vtkTetMeshPaperLayout> paper;
-      paper->SetTextureWidth(std::min(textureLimit, 8192));
-      this->Layout = paper;
-    }
-    else
-    {
-      this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
-    }
-    this->Layout->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
-    this->Layout->AddObserver(vtkCommand::WarningEvent, this->Silencer);
-    this->LayoutKind = kind;
-    this->UploadedLayoutTime = 0;
-  }
-  vtkTetMeshLayout* layout = this->Layout;
-  layout->SetMaximumTextureSize(textureLimit);
-  layout->SetMaximumTextureBufferSize(bufferLimit);
-  this->TextureBufferLimit = bufferLimit;
-  if (!layout->Update(mesh))
-  {
-    this->ReportError(std::string("Cannot pack the mesh for this GPU: ") +
-      layout->GetErrorMessage() + ". Nothing is drawn.");
-    return false;
-  }
-  timer->StopTimer();
-  self->Statistics->SetMeshBuildTime(timer->GetElapsedTime());
-  if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
-  {
-    self->UpdateProgress(1.0);
-  }
-
-  if (mesh->GetMTime() != this->MeshTime)
-  {
-    this->MeshTime = mesh->GetMTime();
-    this->NumberOfTets = mesh->GetNumberOfTetrahedra();
-    this->HasCellScalars = mesh->GetHasCellScalars();
-    mesh->GetShift(this->Shift);
-    double bounds[6];
-    mesh->GetBounds(bounds);
-    for (int i = 0; i < 6; ++i)
-    {
-      this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
-    }
-    mesh->GetScalarRange(this->ScalarRange);
-    this->LongestEdge = ComputeLongestEdge(mesh);
-    const double volume =
-      (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
-    // The edge of a regular tetrahedron of the mean volume: a typical segment length.
-    this->TypicalEdge =
-      this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
+    this->MeshTextures.Invalidate();
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ClearMeshTextures()
-{
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    t->Texture->ReleaseGraphicsResources(this->CheckedWindow);
-    t->Buffer->ReleaseGraphicsResources();
-    delete t;
-  }
-  this->MeshTextures.clear();
-}
-
-//------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRenderWindow* window)
 {
-  vtkTetMeshLayout* layout = this->Layout;
-  if (layout->GetMTime() <= this->UploadedLayoutTime && !this->MeshTextures.empty())
-  {
-    return true; // nothing changed: only the camera moved
-  }
-
-  // The layout has checked its arrays against the GPU's limits; the boundary faces too:
-  const int n = layout->GetNumberOfArrays();
-
-  vtkOpenGLClearErrorMacro();
   vtkIdType uploaded = 0;
-  // The same arrays: same count, names and kinds (the layouts differ in all three).
-  bool sameArrays = static_cast<int>(this->MeshTextures.size()) == n;
-  for (int i = 0; sameArrays && i < n; ++i)
+  std::string error;
+  if (!this->MeshTextures.Update(
+        window, this->Mesh.GetLayout(), this->Mesh.GetMesh(), uploaded, error))
   {
-    sameArrays = this->MeshTextures[i]->Uniform == std::string("in_") + layout->GetArrayName(i) &&
-      this->MeshTextures[i]->Kind == layout->GetArrayKind(i);
-  }
-  if (!sameArrays)
-  {
-    this->ClearMeshTextures();
-  }
-  for (int i = 0; i < n; ++i)
-  {
-    if (!sameArrays)
-    {
-      this->MeshTextures.push_back(new MeshTexture);
-    }
-    MeshTexture* t = this->MeshTextures[i];
-    vtkDataArray* array = layout->GetArray(i);
-    if (sameArrays && array->GetMTime() <= this->UploadedLayoutTime)
-    {
-      continue; // e.g. only the points moved: topology stays on the GPU
-    }
-    t->Uniform = std::string("in_") + layout->GetArrayName(i);
-    t->Kind = layout->GetArrayKind(i);
-    const int comps = array->GetNumberOfComponents();
-    const bool isFloat = array->GetDataType() == VTK_FLOAT;
-    static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
-    static const unsigned int uintFormats[5] = { 0, GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI };
-    if (comps < 1 || comps > 4 || comps == 3 ||
-      (!isFloat && array->GetDataType() != VTK_TYPE_UINT32))
-    {
-      this->ReportError("Internal error: a mesh layout array of an unsupported type.");
-      return false;
-    }
-    const vtkIdType bytes = array->GetNumberOfValues() * array->GetDataTypeSize();
-    t->Texture->SetContext(window);
-    t->Texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
-    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TextureBuffer)
-    {
-      t->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-      if (isFloat)
-      {
-        t->Buffer->Upload(static_cast<const float*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
-      }
-      else
-      {
-        t->Buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
-      }
-      t->Texture->CreateTextureBuffer(static_cast<unsigned int>(array->GetNumberOfTuples()), comps,
-        isFloat ? VTK_FLOAT : VTK_UNSIGNED_INT, t->Buffer);
-    }
-    else
-    {
-      int size[2];
-      layout->GetArrayTextureSize(i, size);
-      t->Texture->SetFormat(comps == 4 ? GL_RGBA : GL_RED);
-      t->Texture->SetDataType(GL_FLOAT);
-      t->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      t->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      t->Texture->Create2DFromRaw(size[0], size[1], comps, VTK_FLOAT, array->GetVoidPointer(0));
-    }
-    t->Bytes = bytes;
-    uploaded += bytes;
-  }
-
-  vtkTetMesh* mesh = this->Builder->GetMesh();
-  if (glGetError() == GL_OUT_OF_MEMORY)
-  {
-    this->ReportError("The GPU ran out of memory while uploading the mesh. Nothing is drawn.");
-    this->ClearMeshTextures();
+    this->ReportError(error);
     return false;
   }
-
-  this->MeshBytes = 0;
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    this->MeshBytes += t->Bytes;
-  }
-  this->UploadedLayoutTime = std::max(layout->GetMTime(), mesh->GetMTime());
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
@@ -1062,179 +437,23 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   vtkVolumeProperty* property, vtkOpenGLRenderWindow* window)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastStatistics* stats = self->Statistics;
-  vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  this->TransferFunction->Update(property, this->ScalarRange);
-  if (self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION &&
-    self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND)
+  vtkTiledRayCastIntegration::Frame frame;
+  frame.Mapper = this->Self;
+  frame.Window = window;
+  frame.Mesh = this->Mesh.GetMesh();
+  std::copy(this->Mesh.ScalarRange, this->Mesh.ScalarRange + 2, frame.ScalarRange);
+  frame.LongestEdge = this->Mesh.LongestEdge;
+  frame.TypicalEdge = this->Mesh.TypicalEdge;
+  frame.ObjectToWorldNorm = this->Geometry.ObjectToWorldNorm;
+  frame.MaxTextureSize = this->MaxTextureSize;
+  frame.Max3DTextureSize = this->Max3DTextureSize;
+  std::string error;
+  if (!this->Integration.Update(frame, property, error))
   {
-    this->ChooseIntegration(property);
+    this->ReportError(error);
+    return false;
   }
-
-  vtkIdType uploaded = 0;
-  const int mode = this->IntegrationMode();
-  stats->SetIntegrationMode(mode);
-  stats->SetPredictedError(
-    self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION
-      ? this->PredictedError
-      : -1.0);
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
-  {
-    if (this->TransferFunction->GetMTime() > this->UploadedNodesTime)
-    {
-      const std::vector<float>& texels = this->TransferFunction->GetNodeTexels();
-      this->NodeBuffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-      this->NodeBuffer->Upload(texels, vtkOpenGLBufferObject::TextureBuffer);
-      this->NodeTexture->SetContext(window);
-      this->NodeTexture->SetInternalFormat(GL_RGBA32F);
-      this->NodeTexture->CreateTextureBuffer(
-        static_cast<unsigned int>(texels.size() / 4), 4, VTK_FLOAT, this->NodeBuffer);
-      this->UploadedNodesTime = this->TransferFunction->GetMTime();
-      uploaded += static_cast<vtkIdType>(texels.size() * sizeof(float));
-    }
-    if (!this->PsiTexture->GetHandle())
-    {
-      // Moreland and Angel's Psi: the same static table as VTK's partial pre-integration.
-      vtkUnstructuredGridPartialPreIntegration::BuildPsiTable();
-      int size = 0;
-      float* psi = vtkUnstructuredGridPartialPreIntegration::GetPsiTable(size);
-      this->PsiTexture->SetContext(window);
-      this->PsiTexture->SetInternalFormat(GL_R32F);
-      this->PsiTexture->SetFormat(GL_RED);
-      this->PsiTexture->SetDataType(GL_FLOAT);
-      this->PsiTexture->SetMinificationFilter(vtkTextureObject::Linear);
-      this->PsiTexture->SetMagnificationFilter(vtkTextureObject::Linear);
-      this->PsiTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->PsiTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-      // The table is indexed [front][back]; texture rows are t, columns s: s = back, t = front.
-      this->PsiTexture->Create2DFromRaw(size, size, 1, VTK_FLOAT, psi);
-      uploaded += static_cast<vtkIdType>(size) * size * 4;
-    }
-    this->TransferFunctionBytes = static_cast<vtkIdType>(
-      this->TransferFunction->GetNodeTexels().size() * sizeof(float) + 512 * 512 * 4);
-    stats->SetPreIntegrationTableSize(0, 0, 0);
-  }
-  else
-  {
-    // A table of the whole transfer function, at the resolution it needs, within the GPU's
-    // limits; rebuilt only when the transfer function, the lengths or the mode changed.
-    vtkTiledRayCastPreIntegrationTable* table = this->Table;
-    this->ConfigureTable(mode);
-    table->Update(property, this->TransferFunction, this->ScalarRange);
-    if (table->GetMTime() > this->UploadedTableTime || mode != this->UploadedTableMode)
-    {
-      int size[3];
-      table->GetSize(size);
-      if (table->GetReducedFromScalarSize() > 0)
-      {
-        // Once per build that had to give up resolution.
-        vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
-                                        << "D pre-integration table of this transfer function "
-                                           "would take more than "
-                                        << table->GetBuildTimeBudget() << " s to build at "
-                                        << table->GetReducedFromScalarSize()
-                                        << " scalar steps: it was built at " << size[0]
-                                        << ", coarser. Partial pre-integration (the default "
-                                           "integration mode) needs no table and is exact for it.");
-      }
-      vtkTextureObject* tex = this->TableTexture;
-      tex->ReleaseGraphicsResources(window);
-      tex->SetContext(window);
-      tex->SetInternalFormat(GL_RGBA32F);
-      tex->SetFormat(GL_RGBA);
-      tex->SetDataType(GL_FLOAT);
-      tex->SetMinificationFilter(vtkTextureObject::Linear);
-      tex->SetMagnificationFilter(vtkTextureObject::Linear);
-      tex->SetWrapS(vtkTextureObject::ClampToEdge);
-      tex->SetWrapT(vtkTextureObject::ClampToEdge);
-      tex->SetWrapR(vtkTextureObject::ClampToEdge);
-      float* data = table->GetTable();
-      bool ok = table->GetDimension() == 3
-        ? tex->Create3DFromRaw(size[0], size[1], size[2], 4, VTK_FLOAT, data)
-        : tex->Create2DFromRaw(size[0], size[1], 4, VTK_FLOAT, data);
-      if (!ok)
-      {
-        this->ReportError("Cannot create the pre-integration table texture. Nothing is drawn.");
-        return false;
-      }
-      this->UploadedTableTime = table->GetMTime();
-      this->UploadedTableMode = mode;
-      uploaded += table->GetNumberOfBytes();
-    }
-    this->TransferFunctionBytes = table->GetNumberOfBytes();
-    int size[3];
-    table->GetSize(size);
-    stats->SetPreIntegrationTableSize(size);
-  }
-  timer->StopTimer();
-  stats->SetTransferFunctionBuildTime(timer->GetElapsedTime());
-  stats->SetNumberOfTransferFunctionNodes(this->TransferFunction->GetNumberOfNodes());
-  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ConfigureTable(int mode)
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastPreIntegrationTable* table = this->Table;
-  const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
-  table->SetDimension(is3D ? 3 : 2);
-  table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
-  table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
-  table->SetMaximumSize(is3D ? this->Max3DTextureSize : this->MaxTextureSize);
-  // Lengths are in world units: the volume's matrix stretches them by at most its norm.
-  table->SetMaximumLength(this->LongestEdge * this->Geometry.ObjectToWorldNorm);
-  table->SetReferenceLength(
-    0.5 * this->TypicalEdge * this->Geometry.ObjectToWorldNorm / std::sqrt(3.0));
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChooseIntegration(
-  vtkVolumeProperty* property)
-{
-  vtkTetMesh* mesh = this->Builder->GetMesh();
-  const double norm = this->Geometry.ObjectToWorldNorm;
-  const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
-    static_cast<double>(mesh->GetMTime()), norm, this->Self->GetMaximumError(),
-    static_cast<double>(this->Self->GetPreIntegrationTableScalarSize()),
-    static_cast<double>(this->Self->GetPreIntegrationTableLengthSize()) };
-  if (key == this->ChoiceKey)
-  {
-    return;
-  }
-  this->ChoiceKey = key;
-  // Cheapest first (measured on the H200: the 2D table, the 3D table, partial pre-integration);
-  // each table is kept if its predicted error is within the budget.
-  this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-  this->PredictedError = 0.0;
-  this->Choice.SampleSegments(mesh, norm);
-  if (!this->Choice.SetProperty(property))
-  {
-    return;
-  }
-  for (int mode :
-    { vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D })
-  {
-    this->ConfigureTable(mode);
-    if (!this->Table->Update(property, this->TransferFunction, this->ScalarRange))
-    {
-      return;
-    }
-    const double error = this->Choice.PredictError(this->Table);
-    vtkDebugWithObjectMacro(this->Self, << "Automatic integration: "
-                                        << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(mode)
-                                        << " predicted " << error << "/255 (worst segment "
-                                        << this->Choice.GetWorstSegmentError() << ")");
-    if (error <= this->Self->GetMaximumError())
-    {
-      this->AutomaticMode = mode;
-      this->PredictedError = error;
-      return;
-    }
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -1248,9 +467,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
     self->GetEmptySpaceSkipping() && self->GetBlendMode() == vtkVolumeMapper::COMPOSITE_BLEND;
   vtkIdType uploaded = 0;
   std::string error;
-  if (!this->VisibleMesh.Update(window, this->Builder->GetMesh(),
-        skip ? this->TransferFunction.GetPointer() : nullptr, this->TextureBufferLimit, uploaded,
-        error))
+  if (!this->VisibleMesh.Update(window, this->Mesh.GetMesh(),
+        skip ? this->Integration.GetTransferFunction() : nullptr, this->Mesh.TextureBufferLimit,
+        uploaded, error))
   {
     this->ReportError(error + ". Nothing is drawn.");
     return false;
@@ -1267,133 +486,32 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  const bool paper = this->LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
-  const int mode = this->IntegrationMode();
-
-  std::string layoutCode = paper ? vtkTiledRayCastPaperLayout : vtkTiledRayCastCompactLayout;
-  if (!paper && this->HasCellScalars)
+  vtkTiledRayCastShaderComposition::Inputs inputs;
+  inputs.Window = window;
+  inputs.Compute = this->UseCompute;
+  inputs.PaperLayout = this->Mesh.LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  inputs.CellScalars = this->Mesh.HasCellScalars;
+  inputs.IntegrationMode = this->IntegrationMode();
+  inputs.BlendMode = this->Self->GetBlendMode();
+  inputs.Shading = this->Lighting.Enabled;
+  inputs.GradientOpacity = this->GradientOpacity.Enabled;
+  inputs.SkipEmptySpace = this->VisibleMesh.GetSkipsEmptySpace();
+  if (!this->Composition.Changed(inputs))
   {
-    // Cell scalars: constant per tet, the field has no gradient.
-    vtkShaderProgram::Substitute(
-      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_TetScalars;");
-    vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
-      "float cellScalar = texelFetch(in_TetScalars, int(tet)).r;\n"
-      "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
+    return true; // the programs of these inputs are built
   }
-  const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
-    ? vtkTiledRayCastPreIntegration3D
-    : (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
-          ? vtkTiledRayCastPreIntegration2D
-          : vtkTiledRayCastPartialPreIntegration);
-  std::string integrationCode = integration;
-  if (self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  const vtkTiledRayCastShaderComposition::Replacements common =
+    vtkTiledRayCastShaderComposition::Compose(inputs, this->VisibleMesh.GetShaderDefinitions());
+  std::string error;
+  const bool built = this->UseCompute
+    ? this->Compute.UpdatePrograms(window, common, error)
+    : this->Fragment.UpdatePrograms(window, this->VersionHeader, common, error);
+  if (!built)
   {
-    // The blend modes evaluate the partial pre-integration's node list and bring their own
-    // trcIntegrate.
-    vtkShaderProgram::Substitute(
-      integrationCode, "void trcIntegrate(", "void trcIntegrateComposite(", false);
-    integrationCode = "#define TRC_BLEND_MODE\n" + integrationCode + vtkTiledRayCastBlendModes;
+    this->ReportError(error);
+    return false;
   }
-  else
-  {
-    // Shaded walks, or walks with gradient opacity, only where the property asks: the walk
-    // without them stays as it is.
-    if (this->Lighting.Enabled)
-    {
-      integrationCode = "#define TRC_SHADING\n" + integrationCode + vtkTiledRayCastShading;
-    }
-    if (this->GradientOpacity.Enabled)
-    {
-      integrationCode =
-        "#define TRC_GRADIENT_OPACITY\n" + integrationCode + vtkTiledRayCastGradientOpacity;
-    }
-  }
-  std::vector<std::pair<std::string, std::string>> common = {
-    { "//TRC::Common::Dec", this->VisibleMesh.GetShaderDefinitions() + vtkTiledRayCastCommonFS },
-    { "//TRC::Layout::Dec", layoutCode },
-    { "//TRC::Integration::Dec", integrationCode },
-  };
-  if (this->UseCompute)
-  {
-    std::string error;
-    if (!this->Compute.UpdatePrograms(window, common, error))
-    {
-      this->ReportError(error);
-      return false;
-    }
-    return true;
-  }
-  common.insert(common.begin(), { "//TRC::Version", this->VersionHeader });
-  common.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
-  const std::string peelDec = "uniform sampler2D in_previousState;\n"
-                              "uniform sampler2D in_previousColor;\n"
-                              "uniform sampler2D in_previousEntry;\n"
-                              "uniform float in_peelEpsilon;\n";
-  // Most fragments of a peel belong to pixels whose ray is not waiting: they leave first.
-  const std::string peelEarly = "ivec2 pixel = ivec2(gl_FragCoord.xy);\n"
-                                "  vec4 previous = texelFetch(in_previousState, pixel, 0);\n"
-                                "  if (trcStatus(previous) != TRC_WAITING)\n"
-                                "  {\n    discard;\n  }\n";
-  const std::string peelImpl =
-    "if (lambda < previous.y - in_peelEpsilon)\n"
-    "  {\n    discard;\n  }\n"
-    "  vec4 lastEntry = texelFetch(in_previousEntry, pixel, 0);\n"
-    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= trcEntryKey(lastEntry))\n"
-    "  {\n    discard;\n  }\n"
-    "  lambda = max(lambda, previous.y);\n"
-    "  color = texelFetch(in_previousColor, pixel, 0);\n";
-
-  struct Spec
-  {
-    Program* Target;
-    const char* VS;
-    const char* GS;
-    const char* FS;
-    bool Peel;
-  };
-  const Spec specs[] = {
-    { &this->FirstHitProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
-      false },
-    { &this->PeelProgram, vtkTiledRayCastBoundaryFaceVS, nullptr, vtkTiledRayCastBoundaryFaceFS,
-      true },
-    { &this->NearSliceProgram, vtkTiledRayCastNearSliceVS, vtkTiledRayCastNearSliceGS,
-      vtkTiledRayCastNearSliceFS, false },
-    { &this->TraversalProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastTraversalFS, false },
-    { &this->CopyProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCopyFS, false },
-    { &this->CountProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCountFS, false },
-    { &this->CompositeProgram, vtkTiledRayCastQuadVS, nullptr, vtkTiledRayCastCompositeFS, false },
-  };
-  for (const Spec& spec : specs)
-  {
-    std::vector<std::pair<std::string, std::string>> replacements = common;
-    replacements.emplace_back("//TRC::Peel::Dec", spec.Peel ? peelDec : std::string());
-    replacements.emplace_back("//TRC::Peel::Early", spec.Peel ? peelEarly : std::string());
-    replacements.emplace_back("//TRC::Peel::Impl", spec.Peel ? peelImpl : std::string());
-    const std::string vs = Substituted(spec.VS, replacements);
-    const std::string fs = Substituted(spec.FS, replacements);
-    const std::string gs = spec.GS ? Substituted(spec.GS, replacements) : std::string();
-    const std::string key = vs + fs + gs;
-    if (key == spec.Target->Key && spec.Target->Shader)
-    {
-      continue;
-    }
-    vtkShaderProgram* shader =
-      window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), gs.c_str());
-    if (!shader || !shader->GetCompiled())
-    {
-      this->ReportError("A shader of the tiled ray caster failed to compile or link; see the "
-                        "shader log above. Nothing is drawn.");
-      spec.Target->Shader = nullptr;
-      return false;
-    }
-    if (shader != spec.Target->Shader)
-    {
-      spec.Target->Shader = shader;
-      spec.Target->VAO->ShaderProgramChanged();
-    }
-    spec.Target->Key = key;
-  }
+  this->Composition.Built(inputs);
   return true;
 }
 
@@ -1413,79 +531,12 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
     }
     return true;
   }
-  if (width <= this->TargetSize[0] && height <= this->TargetSize[1] &&
-    this->Framebuffer[0]->GetFBOIndex() != 0)
+  std::string error;
+  if (!this->Fragment.UpdateTargets(window, width, height, error))
   {
-    return true;
-  }
-  width = std::max(width, this->TargetSize[0]);
-  height = std::max(height, this->TargetSize[1]);
-  vtkOpenGLState* ostate = window->GetState();
-  auto setup = [&](vtkTextureObject* tex, unsigned int internal, unsigned int format, int comps)
-  {
-    tex->SetContext(window);
-    tex->SetInternalFormat(internal);
-    tex->SetFormat(format);
-    tex->SetDataType(GL_FLOAT);
-    tex->SetMinificationFilter(vtkTextureObject::Nearest);
-    tex->SetMagnificationFilter(vtkTextureObject::Nearest);
-    tex->SetWrapS(vtkTextureObject::ClampToEdge);
-    tex->SetWrapT(vtkTextureObject::ClampToEdge);
-    if (tex->GetHandle() && tex->GetWidth() > 0)
-    {
-      tex->Resize(width, height);
-      return true;
-    }
-    return tex->Allocate2D(width, height, comps, VTK_FLOAT);
-  };
-  bool ok = true;
-  for (int q = 0; q < 2; ++q)
-  {
-    ok = ok && setup(this->State[q], GL_RGBA32F, GL_RGBA, 4);
-    ok = ok && setup(this->Color[q], GL_RGBA32F, GL_RGBA, 4);
-    ok = ok && setup(this->Entry[q], GL_RGBA32F, GL_RGBA, 4);
-  }
-  vtkTextureObject* depth = this->Depth;
-  depth->SetContext(window);
-  depth->SetMinificationFilter(vtkTextureObject::Nearest);
-  depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-  if (depth->GetHandle() && depth->GetWidth() > 0)
-  {
-    depth->Resize(width, height);
-  }
-  else
-  {
-    ok = ok && depth->AllocateDepth(width, height, vtkTextureObject::Float32);
-  }
-  if (!ok)
-  {
-    this->ReportError("Cannot allocate the ray-casting render targets. Nothing is drawn.");
+    this->ReportError(error);
     return false;
   }
-  ostate->PushFramebufferBindings();
-  for (int q = 0; q < 2; ++q)
-  {
-    vtkOpenGLFramebufferObject* fbo = this->Framebuffer[q];
-    fbo->SetContext(window);
-    fbo->Bind();
-    fbo->AddColorAttachment(0, this->State[q]);
-    fbo->AddColorAttachment(1, this->Color[q]);
-    fbo->AddColorAttachment(2, this->Entry[q]);
-    fbo->AddDepthAttachment(this->Depth);
-    fbo->ActivateDrawBuffers(3);
-    if (!fbo->CheckFrameBufferStatus(GL_FRAMEBUFFER))
-    {
-      ok = false;
-    }
-  }
-  ostate->PopFramebufferBindings();
-  if (!ok)
-  {
-    this->ReportError("The ray-casting framebuffer is incomplete on this GPU. Nothing is drawn.");
-    return false;
-  }
-  this->TargetSize[0] = width;
-  this->TargetSize[1] = height;
   return true;
 }
 
@@ -1493,233 +544,46 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
-  // Blit the depth of the caller's framebuffer (possibly multisampled) into a texture of ours,
-  // as VTK's GPU ray-cast mapper does. A depth blit needs the same format on both sides, so the
-  // texture takes the format of the framebuffer's depth attachment, whatever the window or the
-  // render pass made it.
-  vtkOpenGLState* state = window->GetState();
-  GLint readFramebuffer = 0;
-  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &readFramebuffer);
-  const GLenum attachment = readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_DEPTH;
-  GLint depthBits = 0, stencilBits = 0, componentType = GL_UNSIGNED_NORMALIZED;
-  glGetFramebufferAttachmentParameteriv(
-    GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &depthBits);
-  if (depthBits > 0)
+  std::string error;
+  if (!this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error))
   {
-    glGetFramebufferAttachmentParameteriv(
-      GL_READ_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_COMPONENT_TYPE, &componentType);
-    glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER,
-      readFramebuffer ? GL_DEPTH_ATTACHMENT : GL_STENCIL, GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE,
-      &stencilBits);
-  }
-  unsigned int format = 0;
-  if (depthBits == 0)
-  {
-    format = GL_NONE; // no depth buffer: nothing opaque stops the rays
-  }
-  else if (stencilBits > 0)
-  {
-    format = componentType == GL_FLOAT ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
-  }
-  else if (componentType == GL_FLOAT)
-  {
-    format = GL_DEPTH_COMPONENT32F;
-  }
-  else
-  {
-    format = depthBits >= 32 ? GL_DEPTH_COMPONENT32
-                             : (depthBits >= 24 ? GL_DEPTH_COMPONENT24 : GL_DEPTH_COMPONENT16);
-  }
-
-  vtkTextureObject* depth = this->OpaqueDepth;
-  // Grows only, like the targets.
-  const bool resized = depth->GetWidth() < static_cast<unsigned int>(width) ||
-    depth->GetHeight() < static_cast<unsigned int>(height);
-  if (format != this->OpaqueDepthFormat || resized || !depth->GetHandle())
-  {
-    const int allocatedWidth = std::max<int>(width, depth->GetHandle() ? depth->GetWidth() : 0);
-    const int allocatedHeight = std::max<int>(height, depth->GetHandle() ? depth->GetHeight() : 0);
-    // A framebuffer object skips re-adding the texture object it already holds, though the
-    // texture behind it is new: start it afresh.
-    this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
-    depth->ReleaseGraphicsResources(window);
-    depth->SetContext(window);
-    depth->SetMinificationFilter(vtkTextureObject::Nearest);
-    depth->SetMagnificationFilter(vtkTextureObject::Nearest);
-    depth->SetWrapS(vtkTextureObject::ClampToEdge);
-    depth->SetWrapT(vtkTextureObject::ClampToEdge);
-    bool ok = true;
-    if (format == GL_DEPTH24_STENCIL8)
-    {
-      ok = depth->AllocateDepthStencil(allocatedWidth, allocatedHeight);
-    }
-    else
-    {
-      const bool stencil = format == GL_DEPTH32F_STENCIL8;
-      depth->SetInternalFormat(format == GL_NONE ? GL_DEPTH_COMPONENT32F : format);
-      depth->SetFormat(stencil ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT);
-      depth->SetDataType(stencil
-          ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV
-          : (format == GL_DEPTH_COMPONENT32F || format == GL_NONE ? GL_FLOAT : GL_UNSIGNED_INT));
-      ok = depth->Allocate2D(allocatedWidth, allocatedHeight, 1, VTK_FLOAT);
-    }
-    if (!ok)
-    {
-      this->ReportError("Cannot allocate a texture for the scene's depth. Nothing is drawn.");
-      return false;
-    }
-    state->PushFramebufferBindings();
-    this->OpaqueDepthFramebuffer->SetContext(window);
-    this->OpaqueDepthFramebuffer->Bind();
-    this->OpaqueDepthFramebuffer->AddDepthAttachment(depth);
-    state->vtkglDrawBuffer(GL_NONE);
-    state->vtkglReadBuffer(GL_NONE);
-    state->PopFramebufferBindings();
-    this->OpaqueDepthFormat = format;
-  }
-
-  // Errors left by earlier GL calls are not this blit's (vtkOpenGLClearErrorMacro is compiled
-  // out of release builds of VTK).
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
-  {
-  }
-  state->PushDrawFramebufferBinding();
-  this->OpaqueDepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  if (format == GL_NONE)
-  {
-    // Depth 1 everywhere: the rays run to the far plane.
-    vtkOpenGLState::ScopedglDepthMask depthMask(state);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  }
-  else
-  {
-    // One depth per ray: at an image sample distance above 1 the nearest of the pixels around
-    // the ray (a depth blit may scale, never filter).
-    state->vtkglBlitFramebuffer(this->Viewport[0], this->Viewport[1], this->Viewport[0] + width,
-      this->Viewport[1] + height, 0, 0, this->ImageSize[0], this->ImageSize[1],
-      GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
-  state->PopDrawFramebufferBinding();
-  const GLenum error = glGetError();
-  if (error != GL_NO_ERROR)
-  {
-    std::ostringstream msg;
-    msg << "Cannot read the depth of the scene's framebuffer (" << vtkOpenGLStrError(error)
-        << ", depth format 0x" << std::hex << format << "). Nothing is drawn.";
-    this->ReportError(msg.str());
+    this->ReportError(error);
     return false;
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTiles()
-{
-  const int w = this->ImageSize[0];
-  const int h = this->ImageSize[1];
-  const int size = this->Self->GetTileSize() > 0 ? this->Self->GetTileSize() : std::max(w, h);
-  this->Tiles.clear();
-  for (int y = 0; y < h; y += size)
-  {
-    for (int x = 0; x < w; x += size)
-    {
-      Tile t;
-      t.X0 = x;
-      t.Y0 = y;
-      t.X1 = std::min(x + size, w);
-      t.Y1 = std::min(y + size, h);
-      this->Tiles.push_back(t);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReadTimers(bool wait)
 {
-  if (!this->TimersPending)
+  if (this->Timers.Read(wait, this->Self->Statistics))
   {
-    return;
+    // What AutoAdjustSampleDistances fits the next frames to.
+    this->SampleDistance.Measured(
+      this->TimedSampleDistance, 1e-3 * this->Self->Statistics->GetTotalGPUTime());
   }
-  auto ready = [this]()
-  {
-    for (const PhaseTimer& t : this->PhaseTimers)
-    {
-      if (!t.Ready())
-      {
-        return false;
-      }
-    }
-    return this->TotalTimer.Ready();
-  };
-  if (wait)
-  {
-    // vtkOpenGLRenderTimer only polls: finish the frame's work, then poll until the results
-    // have arrived.
-    glFinish();
-    while (!ready())
-    {
-    }
-  }
-  else if (!ready())
-  {
-    return;
-  }
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetFirstHitTime(this->PhaseTimers[PhaseFirstHit].GetMilliseconds());
-  stats->SetPeelingTime(this->PhaseTimers[PhasePeeling].GetMilliseconds());
-  stats->SetRayCastingTime(this->PhaseTimers[PhaseRayCasting].GetMilliseconds());
-  stats->SetCompositingTime(this->PhaseTimers[PhaseCompositing].GetMilliseconds());
-  stats->SetTotalGPUTime(this->TotalTimer.GetMilliseconds());
-  this->TimersPending = false;
-  // What AutoAdjustSampleDistances fits the next frames to.
-  this->SampleDistance.Measured(this->TimedSampleDistance, 1e-3 * stats->GetTotalGPUTime());
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool activate)
 {
+  // The mesh's textures take the first units, then the others in this order.
+  this->MeshTextures.ActivateTextures(activate);
   std::vector<vtkTextureObject*> textures;
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    textures.push_back(t->Texture);
-  }
-  textures.push_back(this->OpaqueDepth);
+  textures.push_back(this->OpaqueDepth.GetTexture());
   if (this->UseCompute)
   {
     textures.push_back(this->Compute.GetColorTexture());
   }
   else
   {
-    for (int q = 0; q < 2; ++q)
-    {
-      textures.push_back(this->State[q]);
-      textures.push_back(this->Color[q]);
-      textures.push_back(this->Entry[q]);
-    }
+    // The fragment pipeline's targets take the units after these.
+    ActivateAll(textures, activate);
+    textures.clear();
+    this->Fragment.ActivateTextures(activate);
   }
-  const int mode = this->IntegrationMode();
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
-  {
-    textures.push_back(this->NodeTexture);
-    textures.push_back(this->PsiTexture);
-  }
-  else
-  {
-    textures.push_back(this->TableTexture);
-  }
-  for (vtkTextureObject* t : textures)
-  {
-    if (activate)
-    {
-      t->Activate();
-    }
-    else
-    {
-      t->Deactivate();
-    }
-  }
+  ActivateAll(textures, activate);
+  this->Integration.ActivateTextures(this->IntegrationMode(), activate);
   this->VisibleMesh.ActivateTextures(activate);
 }
 
@@ -1747,7 +611,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShader
   {
     p->SetUniform4fv("in_clippingPlanes", g.NumberOfClippingPlanes, g.ClippingPlanes);
   }
-  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth->GetTextureUnit());
+  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth.GetTexture()->GetTextureUnit());
   p->SetUniformf(
     "in_earlyTerminationOpacity", static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
 }
@@ -1768,12 +632,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetCoverageUniforms(vtkSha
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderProgram* p)
 {
-  for (MeshTexture* t : this->MeshTextures)
-  {
-    p->SetUniformi(t->Uniform.c_str(), t->Texture->GetTextureUnit());
-  }
+  this->MeshTextures.SetUniforms(p);
   this->VisibleMesh.SetUniforms(p);
-  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Layout))
+  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Mesh.GetLayout()))
   {
     p->SetUniformi("in_paperWidth", paper->GetTextureWidth());
   }
@@ -1783,9 +644,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderP
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShaderProgram* p)
 {
   // Scalars and transfer-function nodes are shifted on the GPU (vtkTetMesh::GetScalarShift).
-  const double shift = vtkTetMesh::ComputeScalarShift(this->ScalarRange);
-  const float range[2] = { static_cast<float>(this->ScalarRange[0] - shift),
-    static_cast<float>(this->ScalarRange[1] - shift) };
+  const double shift = vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange);
+  const float range[2] = { static_cast<float>(this->Mesh.ScalarRange[0] - shift),
+    static_cast<float>(this->Mesh.ScalarRange[1] - shift) };
   const double* average = this->Self->GetAverageIPScalarRange();
   const float averageRange[2] = { static_cast<float>(std::max(average[0] - shift, -3.0e38)),
     static_cast<float>(std::min(average[1] - shift, 3.0e38)) };
@@ -1793,8 +654,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShader
   p->SetUniform2f("in_blendScalarRange", range);
   p->SetUniform2f("in_averageRange", averageRange);
   // The unit distance the node list's attenuations were divided by: opacity = tau * distance.
-  p->SetUniformf(
-    "in_opacityUnitDistance", static_cast<float>(this->TransferFunction->GetUnitDistance()));
+  p->SetUniformf("in_opacityUnitDistance",
+    static_cast<float>(this->Integration.GetTransferFunction()->GetUnitDistance()));
 }
 
 //------------------------------------------------------------------------------
@@ -1831,44 +692,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShad
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->IntegrationMode();
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  this->Integration.SetUniforms(p, mode, vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange));
+  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
+    this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {
-    p->SetUniformi("in_transferFunction", this->NodeTexture->GetTextureUnit());
-    p->SetUniformi("in_transferFunctionNodes", this->TransferFunction->GetNumberOfNodes());
-    p->SetUniformi("in_psiTable", this->PsiTexture->GetTextureUnit());
-    p->SetUniformf("in_psiTableSize", static_cast<float>(this->PsiTexture->GetWidth()));
-    if (this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-    {
-      this->SetBlendUniforms(p);
-    }
-    this->SetShadingUniforms(p);
-    return;
+    this->SetBlendUniforms(p);
   }
   this->SetShadingUniforms(p);
-  vtkTiledRayCastPreIntegrationTable* table = this->Table;
-  int size[3];
-  table->GetSize(size);
-  double range[2];
-  table->GetScalarRange(range);
-  // The mesh's scalars are shifted on the GPU (vtkTetMesh::GetScalarShift): so is the table's
-  // first grid scalar.
-  const float scalarMap[3] = { static_cast<float>(
-                                 range[0] - vtkTetMesh::ComputeScalarShift(this->ScalarRange)),
-    static_cast<float>(range[1] > range[0] ? (size[0] - 1) / (range[1] - range[0]) : 0.0),
-    static_cast<float>(size[0]) };
-  p->SetUniformi("in_preIntegrationTable", this->TableTexture->GetTextureUnit());
-  p->SetUniform3f("in_tableScalarMap", scalarMap);
-  if (mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D)
-  {
-    const double longest = table->GetMaximumLength();
-    const float lengthMap[3] = { static_cast<float>(longest > 0 ? (size[2] - 1) / longest : 0.0),
-      static_cast<float>(size[2]), static_cast<float>(longest > 0 ? longest : 1e30) };
-    p->SetUniform3f("in_tableLengthMap", lengthMap);
-  }
-  else
-  {
-    p->SetUniformf("in_tableReferenceLength", static_cast<float>(table->GetReferenceLength()));
-  }
 }
 
 //------------------------------------------------------------------------------
@@ -1881,462 +711,19 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetSampleScaleUniforms(vtk
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetTargetUniforms(
-  vtkShaderProgram* p, int parity)
-{
-  p->SetUniformi("in_state", this->State[parity]->GetTextureUnit());
-  p->SetUniformi("in_color", this->Color[parity]->GetTextureUnit());
-  p->SetUniformi("in_entry", this->Entry[parity]->GetTextureUnit());
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawRectangle(
-  Program& program, int x0, int y0, int x1, int y1)
-{
-  const float w = static_cast<float>(this->ImageSize[0]);
-  const float h = static_cast<float>(this->ImageSize[1]);
-  const float rect[4] = { 2.0f * x0 / w - 1.0f, 2.0f * y0 / h - 1.0f, 2.0f * x1 / w - 1.0f,
-    2.0f * y1 / h - 1.0f };
-  program.Shader->SetUniform4f("in_rectangle", rect);
-  program.Shader->SetUniformf("in_rectangleDepth", RectangleDepth);
-  // A screen rectangle is never culled: the boundary passes cull by the volume's handedness,
-  // front faces (counter-clockwise, like the rectangle) when its matrix mirrors.
-  this->CheckedWindow->GetState()->vtkglDisable(GL_CULL_FACE);
-  program.VAO->Bind();
-  glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawViewport(Program& program)
-{
-  this->DrawRectangle(program, 0, 0, this->ImageSize[0], this->ImageSize[1]);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BindTargets(vtkOpenGLState*, int parity)
-{
-  // Every pass writes all three targets (state, colour, entry). VTK 9.1's state cache keeps one
-  // set of draw buffers for all framebuffers, so after switching framebuffers it may believe
-  // ours are already set when they are not: going through "none" forces the real call.
-  vtkOpenGLFramebufferObject* fbo = this->Framebuffer[parity];
-  fbo->Bind(GL_DRAW_FRAMEBUFFER);
-  fbo->DeactivateDrawBuffers();
-  fbo->ActivateDrawBuffers(3);
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFirstHit(vtkOpenGLRenderWindow* window)
-{
-  ScopedDebugEvent event("FirstHit");
-  vtkOpenGLState* state = window->GetState();
-
-  // Both target sets start as "no ray" (all zero), so that a tile the GPU skips because it has
-  // no ray is the same in both, whatever its parity.
-  state->vtkglClearColor(0.f, 0.f, 0.f, 0.f);
-  state->vtkglClearDepth(1.0);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  for (int q = 1; q >= 0; --q)
-  {
-    this->BindTargets(state, q);
-    state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  }
-  this->BindTargets(state, 0);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-
-  if (this->Geometry.NearPlaneCutsMesh)
-  {
-    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
-    state->vtkglDisable(GL_CULL_FACE);
-    this->SetFrameUniforms(this->Use(window, this->NearSliceProgram));
-    this->SetMeshUniforms(this->NearSliceProgram.Shader);
-    this->NearSliceProgram.VAO->Bind();
-    this->NearPlaneQuery = this->Queries.Begin();
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(this->NumberOfTets));
-    this->Queries.End();
-  }
-
-  // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  this->SetFrameUniforms(this->Use(window, this->FirstHitProgram));
-  this->SetMeshUniforms(this->FirstHitProgram.Shader);
-  this->SetCoverageUniforms(this->FirstHitProgram.Shader);
-  this->FirstHitProgram.VAO->Bind();
-  // Faces are not clipped at the near plane: their fragment shader decides there.
-  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
-  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  vtkInternalsCheckErrorMacro("failed after the first-hit pass");
-  return true;
-}
-
-//------------------------------------------------------------------------------
-unsigned int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Peel(vtkOpenGLRenderWindow* window)
-{
-  ScopedDebugEvent event("Peel");
-  vtkOpenGLState* state = window->GetState();
-
-  // The peel reads set 0 and writes set 1 where a ray re-enters: make both sets hold the same
-  // state first (per tile, from whichever set is current).
-  this->MakeTilesIdentical(window);
-
-  this->BindTargets(state, 1);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_LESS);
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(this->Geometry.Mirrored ? GL_FRONT : GL_BACK);
-  vtkShaderProgram* p = this->Use(window, this->PeelProgram);
-  this->SetFrameUniforms(p);
-  this->SetMeshUniforms(p);
-  this->SetCoverageUniforms(p);
-  p->SetUniformi("in_previousState", this->State[0]->GetTextureUnit());
-  p->SetUniformi("in_previousEntry", this->Entry[0]->GetTextureUnit());
-  p->SetUniformi("in_previousColor", this->Color[0]->GetTextureUnit());
-  p->SetUniformf("in_peelEpsilon", PeelEpsilon);
-  this->PeelProgram.VAO->Bind();
-  const unsigned int query = this->Queries.Begin();
-  const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * this->VisibleMesh.GetNumberOfFaces()));
-  vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  this->Queries.End();
-  // Whether another layer exists decides what to draw next: this read waits for the GPU, once
-  // per layer (as VTK's dual depth peeling does).
-  const unsigned int reentered = this->Queries.GetResult(query);
-  for (Tile& tile : this->Tiles)
-  {
-    tile.Parity = 1;
-  }
-  vtkInternalsCheckErrorMacro("failed after a peeling pass");
-  return reentered;
-}
-
-//------------------------------------------------------------------------------
-vtkShaderProgram* vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Use(
-  vtkOpenGLRenderWindow* window, Program& program)
-{
-  window->GetShaderCache()->ReadyShaderProgram(program.Shader);
-  return program.Shader;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CopyTile(
-  vtkOpenGLRenderWindow* window, Tile& tile, bool markInactive)
-{
-  // Copies the tile's current set to the other set and flips its parity. As a Z-update it also
-  // writes depth 0 for rays that are no longer active (later passes skip them) and 1 for the
-  // others; the caller sets the depth test.
-  vtkShaderProgram* copy = this->Use(window, this->CopyProgram);
-  this->BindTargets(window->GetState(), 1 - tile.Parity);
-  this->SetTargetUniforms(copy, tile.Parity);
-  copy->SetUniformi("in_markInactive", markInactive ? 1 : 0);
-  this->DrawRectangle(this->CopyProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-  tile.Parity = 1 - tile.Parity;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MakeTilesIdentical(
-  vtkOpenGLRenderWindow* window)
-{
-  // After a copy from the current set to the other, both sets hold the same state.
-  vtkOpenGLState* state = window->GetState();
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  for (Tile& tile : this->Tiles)
-  {
-    this->CopyTile(window, tile, false);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CountActiveRays(
-  vtkOpenGLRenderWindow* window, Tile& tile)
-{
-  vtkOpenGLState* state = window->GetState();
-  vtkShaderProgram* count = this->Use(window, this->CountProgram);
-  count->SetUniformi("in_statusMask", 1 << StatusActive);
-  this->SetTargetUniforms(count, tile.Parity);
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  tile.LastQuery = this->Queries.Begin();
-  this->DrawRectangle(this->CountProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-  this->Queries.End();
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  stats->SetNumberOfOcclusionQueries(stats->GetNumberOfOcclusionQueries() + 1);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RayCastLayer(vtkOpenGLRenderWindow* window)
-{
-  ScopedDebugEvent event("RayCastLayer");
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastStatistics* stats = self->Statistics;
-  const int tetsPerPass = self->GetTetsPerPass();
-  const int interval = self->GetOcclusionQueryInterval();
-  const int maxPasses = self->GetMaximumNumberOfPassesPerLayer();
-
-  // No ray of this layer is marked finished yet.
-  this->BindTargets(state, 0);
-  state->vtkglDepthMask(GL_TRUE);
-  state->vtkglClearDepth(1.0);
-  state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-
-  // Count the active rays of every tile. The GPU skips the passes of a tile whose count is zero
-  // (conditional rendering), and the CPU never waits for these counts.
-  for (Tile& tile : this->Tiles)
-  {
-    tile.PreviousQuery = 0;
-    this->CountActiveRays(window, tile);
-    tile.Running = true;
-  }
-
-  vtkShaderProgram* traversal = this->Use(window, this->TraversalProgram);
-  this->SetFrameUniforms(traversal);
-  this->SetMeshUniforms(traversal);
-  this->SetIntegrationUniforms(traversal);
-  traversal->SetUniformi("in_tetsPerPass", tetsPerPass);
-  traversal->SetUniformi("in_maximumSteps", this->GetMaximumSteps());
-
-  if (tetsPerPass == 0)
-  {
-    // No limit on tets per pass: one pass per tile finishes every ray of the layer.
-    state->vtkglDisable(GL_DEPTH_TEST);
-    state->vtkglDepthMask(GL_FALSE);
-    for (size_t i = 0; i < this->Tiles.size(); ++i)
-    {
-      Tile& tile = this->Tiles[i];
-      this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->BindTargets(state, 1 - tile.Parity);
-      this->SetTargetUniforms(traversal, tile.Parity);
-      this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-      this->Queries.EndConditionalRender();
-      tile.Parity = 1 - tile.Parity;
-      this->PassBlocks.push_back({ i, tile.LastQuery, 1 });
-    }
-    return;
-  }
-
-  // The paper's scheme: rounds of k passes per running tile, each ending with a Z-update (the
-  // rays no longer active are marked in the depth buffer, so later passes skip them) and an
-  // occlusion query counting the tile's active rays. A tile stops once a count of zero comes
-  // back. Counts are polled without waiting; the passes issued meanwhile for a tile that is in
-  // fact done are skipped by the GPU, which also leaves both of its target sets identical.
-  bool anyRunning = true;
-  while (anyRunning)
-  {
-    anyRunning = false;
-    for (size_t i = 0; i < this->Tiles.size(); ++i)
-    {
-      Tile& tile = this->Tiles[i];
-      if (!tile.Running)
-      {
-        continue;
-      }
-      // Stop once a count of zero is known. The latest count is polled; if it is not there yet,
-      // the one of the round before (issued a whole round of other tiles ago) is waited for, so
-      // at most one round is issued that the GPU may skip.
-      if (this->Queries.IsAvailable(tile.LastQuery))
-      {
-        if (this->Queries.GetResult(tile.LastQuery) == 0)
-        {
-          tile.Running = false;
-          continue;
-        }
-      }
-      else if (tile.PreviousQuery && this->Queries.GetResult(tile.PreviousQuery) == 0)
-      {
-        tile.Running = false;
-        continue;
-      }
-      if (tile.Passes >= maxPasses)
-      {
-        vtkWarningWithObjectMacro(self, << "A tile reached " << maxPasses
-                                        << " ray-casting passes in one layer and was stopped; "
-                                           "the mesh's neighbour links may loop.");
-        tile.Running = false;
-        continue;
-      }
-      anyRunning = true;
-      this->Queries.BeginConditionalRender(tile.LastQuery);
-      this->Use(window, this->TraversalProgram);
-      state->vtkglEnable(GL_DEPTH_TEST);
-      state->vtkglDepthFunc(GL_LESS);
-      state->vtkglDepthMask(GL_FALSE);
-      for (int k = 0; k < interval; ++k)
-      {
-        this->BindTargets(state, 1 - tile.Parity);
-        this->SetTargetUniforms(traversal, tile.Parity);
-        this->DrawRectangle(this->TraversalProgram, tile.X0, tile.Y0, tile.X1, tile.Y1);
-        tile.Parity = 1 - tile.Parity;
-      }
-      // The Z-update writes its own depth (0 or 1) for every pixel: it must not be depth-tested
-      // against the last one, or active rays (1 against 1) would not be copied and the next
-      // round would start from a stale set (a lost pass per round, no progress at all for K=1).
-      state->vtkglDepthFunc(GL_ALWAYS);
-      state->vtkglDepthMask(GL_TRUE);
-      this->CopyTile(window, tile, true);
-      this->Queries.EndConditionalRender();
-      this->PassBlocks.push_back({ i, tile.LastQuery, interval });
-      stats->SetNumberOfZUpdatePasses(stats->GetNumberOfZUpdatePasses() + 1);
-      tile.Passes += interval;
-      tile.PreviousQuery = tile.LastQuery;
-      this->CountActiveRays(window, tile);
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::Composite(vtkOpenGLRenderWindow* window)
-{
-  ScopedDebugEvent event("Composite");
-  vtkOpenGLState* state = window->GetState();
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-
-  // Bring every tile to set 0, then count the rays that became opaque.
-  state->vtkglDisable(GL_DEPTH_TEST);
-  state->vtkglDepthMask(GL_FALSE);
-  for (Tile& tile : this->Tiles)
-  {
-    if (tile.Parity == 1)
-    {
-      this->CopyTile(window, tile, false);
-    }
-  }
-  vtkShaderProgram* count = this->Use(window, this->CountProgram);
-  count->SetUniformi("in_statusMask", 1 << StatusDoneOpaque);
-  this->SetTargetUniforms(count, 0);
-  state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  const unsigned int opaqueQuery = this->Queries.Begin();
-  this->DrawViewport(this->CountProgram);
-  this->Queries.End();
-  // And the rays that entered the mesh, counted here rather than while compositing: the
-  // caller's framebuffer may be multisampled, ours counts pixels.
-  count->SetUniformi("in_statusMask", ~(1 << StatusMiss));
-  const unsigned int raysQuery = this->Queries.Begin();
-  this->DrawViewport(this->CountProgram);
-  this->Queries.End();
-  state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
-  state->PopFramebufferBindings();
-  state->vtkglViewport(this->Viewport[0], this->Viewport[1], this->Viewport[2], this->Viewport[3]);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  vtkShaderProgram* composite = this->Use(window, this->CompositeProgram);
-  this->SetTargetUniforms(composite, 0);
-  const float origin[2] = { static_cast<float>(this->Viewport[0]),
-    static_cast<float>(this->Viewport[1]) };
-  composite->SetUniform2f("in_viewportOrigin", origin);
-  this->SetSampleScaleUniforms(composite);
-  this->DrawViewport(this->CompositeProgram);
-
-  stats->SetNumberOfRaysTerminatedEarly(this->Queries.GetResult(opaqueQuery));
-  stats->SetNumberOfRays(this->Queries.GetResult(raysQuery));
-  vtkInternalsCheckErrorMacro("failed after compositing");
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishStatistics()
-{
-  // Passes the GPU really ran: those whose tile count was not zero (all these queries are
-  // answered by now, the last peel having waited for the GPU).
-  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-  std::vector<int> passes(this->Tiles.size(), 0);
-  vtkIdType total = 0;
-  for (const PassBlock& block : this->PassBlocks)
-  {
-    if (this->Queries.GetResult(block.Condition) > 0)
-    {
-      passes[block.TileIndex] += block.Passes;
-      total += block.Passes;
-    }
-  }
-  std::vector<int>& perTile = stats->GetPassesPerTile();
-  perTile.clear();
-  int skipped = 0;
-  for (int p : passes)
-  {
-    if (p > 0)
-    {
-      perTile.push_back(p);
-    }
-    else
-    {
-      ++skipped;
-    }
-  }
-  stats->FinishTilePasses();
-  stats->SetNumberOfRayCastPasses(total);
-  stats->SetNumberOfNearPlaneRays(
-    this->NearPlaneQuery ? this->Queries.GetResult(this->NearPlaneQuery) : 0);
-  stats->SetNumberOfTiles(static_cast<int>(this->Tiles.size()));
-  stats->SetNumberOfTilesSkipped(skipped);
-}
-
-//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Compute.ReleaseGraphicsResources(window);
-  this->ClearMeshTextures();
+  this->MeshTextures.ReleaseGraphicsResources(this->CheckedWindow);
   this->VisibleMesh.ReleaseGraphicsResources(window);
-  this->NodeTexture->ReleaseGraphicsResources(window);
-  this->NodeBuffer->ReleaseGraphicsResources();
-  this->PsiTexture->ReleaseGraphicsResources(window);
-  this->TableTexture->ReleaseGraphicsResources(window);
-  for (int q = 0; q < 2; ++q)
-  {
-    this->State[q]->ReleaseGraphicsResources(window);
-    this->Color[q]->ReleaseGraphicsResources(window);
-    this->Entry[q]->ReleaseGraphicsResources(window);
-    this->Framebuffer[q]->ReleaseGraphicsResources(window);
-  }
-  this->OpaqueDepthFramebuffer->ReleaseGraphicsResources(window);
-  this->Depth->ReleaseGraphicsResources(window);
-  this->OpaqueDepth->ReleaseGraphicsResources(window);
+  this->Integration.ReleaseGraphicsResources(window);
+  this->Fragment.ReleaseGraphicsResources(window);
+  this->OpaqueDepth.ReleaseGraphicsResources(window);
   this->UseCompute = false;
-  for (Program* p :
-    { &this->FirstHitProgram, &this->PeelProgram, &this->NearSliceProgram, &this->TraversalProgram,
-      &this->CopyProgram, &this->CountProgram, &this->CompositeProgram })
-  {
-    p->Release(window);
-  }
-  this->Queries.ReleaseGraphicsResources();
-  for (PhaseTimer& t : this->PhaseTimers)
-  {
-    t.ReleaseGraphicsResources();
-  }
-  this->TotalTimer.ReleaseGraphicsResources();
-  this->TimersPending = false;
-  this->TargetSize[0] = this->TargetSize[1] = 0;
+  this->Composition.Reset();
+  this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
-  this->UploadedLayoutTime = 0;
-  this->UploadedNodesTime = 0;
-  this->UploadedTableTime = 0;
-  this->UploadedTableMode = -1;
-  this->MeshBytes = 0;
-  this->TransferFunctionBytes = 0;
   this->CheckedWindow = nullptr;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseFragmentTargets(vtkWindow* window)
-{
-  for (int q = 0; q < 2; ++q)
-  {
-    this->State[q]->ReleaseGraphicsResources(window);
-    this->Color[q]->ReleaseGraphicsResources(window);
-    this->Entry[q]->ReleaseGraphicsResources(window);
-    this->Framebuffer[q]->ReleaseGraphicsResources(window);
-  }
-  this->Depth->ReleaseGraphicsResources(window);
-  this->TargetSize[0] = this->TargetSize[1] = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -2350,7 +737,7 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkOpenGLTiledRayCastVolumeMapper()
 //------------------------------------------------------------------------------
 vtkOpenGLTiledRayCastVolumeMapper::~vtkOpenGLTiledRayCastVolumeMapper()
 {
-  this->Impl->StopDeferring();
+  this->Impl->Deferred.Stop();
   // Frees the GL objects in their own context, if the window still exists.
   this->ResourceCallback->Release();
   delete this->ResourceCallback;
@@ -2397,6 +784,196 @@ int vtkOpenGLTiledRayCastVolumeMapper::IsRenderSupported(
 }
 
 //------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnTranslucentGeometry(
+  vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
+  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
+  // it, the volume's property keys carry the peeling pass's depth-mask override).
+  vtkInformation* keys = vol->GetPropertyKeys();
+  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
+  vtkPropCollection* props = ren->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  for (vtkProp* prop = props->GetNextProp(it);
+       prop && !translucentGeometry && !this->WarnedTranslucentGeometry;
+       prop = props->GetNextProp(it))
+  {
+    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
+      prop->HasTranslucentPolygonalGeometry();
+  }
+  if (translucentGeometry && !this->WarnedTranslucentGeometry)
+  {
+    vtkWarningWithObjectMacro(self,
+      "Translucent polygonal geometry in the same renderer is not composited "
+      "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
+      "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
+      "render it in another renderer.");
+    this->WarnedTranslucentGeometry = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckBlendMode()
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  if (self->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
+    self->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
+  {
+    this->ReportError("Blend mode " + std::to_string(self->BlendMode) +
+      " is not supported (composite, maximum, minimum and average intensity, additive are). "
+      "Nothing is drawn.");
+    return false;
+  }
+  if (self->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !this->UseCompute)
+  {
+    this->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
+                      "Nothing is drawn.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* ren, vtkVolume* vol,
+  vtkDataObject* input, vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2])
+{
+  // CPU work: only what changed.
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  const int width = this->Viewport[2];
+  const int height = this->Viewport[3];
+  if (!this->UpdateMesh(input, property))
+  {
+    return false;
+  }
+  if (!this->Geometry.Compute(ren, vol, this->Mesh.Shift, this->Mesh.MeshBounds))
+  {
+    this->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
+    return false;
+  }
+  this->Lighting.Compute(ren, vol, self->BlendMode);
+  this->GradientOpacity.Compute(property, self->BlendMode);
+  this->WarnLighting();
+  if (!this->Geometry.ComputeClippingPlanes(self->ClippingPlanes, this->Mesh.MeshBounds) &&
+    !this->WarnedClippingPlanes)
+  {
+    vtkErrorWithObjectMacro(
+      self, << self->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "
+            << "clips with the first " << vtkTiledRayCastFrameGeometry::MaximumClippingPlanes
+            << " (as VTK's OpenGL mappers).");
+    this->WarnedClippingPlanes = true;
+  }
+  if (this->Geometry.ClippedAway)
+  {
+    return false; // the clipping planes leave nothing of the mesh: nothing is visible
+  }
+  // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
+  // the volume (vtkTiledRayCastSampleDistance).
+  this->FrameSampleDistance = this->SampleDistance.Choose(self->AutoAdjustSampleDistances != 0,
+    self->ImageSampleDistance, self->MinimumImageSampleDistance, self->MaximumImageSampleDistance,
+    vol->GetAllocatedRenderTime());
+  vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, this->FrameSampleDistance, rays);
+  if (!this->UploadMesh(window) || !this->UpdateTransferFunction(property, window) ||
+    !this->UpdateVisibleMesh(window) || !this->UpdatePrograms(window) ||
+    !this->UpdateTargets(window, rays[0], rays[1]))
+  {
+    return false;
+  }
+  this->LastError.clear();
+  this->ReadTimers(self->SynchronousStatistics);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawFrame(
+  vtkOpenGLRenderWindow* window, const int rays[2])
+{
+  // GPU work.
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  const int width = this->Viewport[2];
+  const int height = this->Viewport[3];
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
+  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
+  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
+  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
+  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
+  vtkOpenGLState::ScopedglViewport viewportSaver(state);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  state->vtkglDisable(GL_BLEND);
+
+  // GPU timers of the previous frame still in flight are not restarted: this frame is then not
+  // timed, and the statistics keep the latest times measured.
+  if (this->Timers.BeginFrame())
+  {
+    this->TimedSampleDistance = this->FrameSampleDistance;
+  }
+  this->Timers.Start(vtkTiledRayCastPhaseTimers::Total);
+  // The opaque geometry drawn so far ends the rays.
+  if (!this->CaptureOpaqueDepth(window, width, height))
+  {
+    return false;
+  }
+
+  state->PushFramebufferBindings();
+  state->vtkglViewport(0, 0, rays[0], rays[1]);
+  int cullFaceMode = GL_BACK;
+  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
+  this->ActivateTextures(true);
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  stats->SetPipeline(this->UseCompute ? "Compute" : "Fragment");
+  const bool ok = this->UseCompute ? this->RenderCompute(window) : this->RenderFragment(window);
+  this->Timers.Stop(vtkTiledRayCastPhaseTimers::Total);
+  this->Timers.EndFrame();
+  state->vtkglCullFace(cullFaceMode);
+  this->ActivateTextures(false);
+  if (!ok)
+  {
+    return false;
+  }
+  if (self->SynchronousStatistics)
+  {
+    if (this->UseCompute)
+    {
+      this->Compute.ReadCounts(stats);
+    }
+    this->ReadTimers(true);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnAfterFrame()
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  if (this->UseCompute && this->Compute.GetNumberOfRaysStopped() > 0 && !this->WarnedStoppedRays)
+  {
+    vtkWarningWithObjectMacro(
+      self, << this->Compute.GetNumberOfRaysStopped()
+            << " rays reached the bound of steps in one boundary layer and were "
+               "stopped; the mesh's neighbour links may loop.");
+    this->WarnedStoppedRays = true;
+  }
+  const vtkIdType incomplete = this->UseCompute ? this->Compute.TakeNumberOfRaysIncomplete() : 0;
+  if (incomplete > 0)
+  {
+    // Every time: each is a frame drawn with layers missing, which the next frames are not.
+    vtkWarningWithObjectMacro(
+      self, << incomplete << " rays of a recent frame missed boundary layers: the view asked for "
+            << stats->GetNumberOfEntries()
+            << " ray entries, far more than the frames before it, and the entry list "
+               "did not hold them. The list has grown to fit; turn "
+               "SynchronousStatistics on to verify every frame.");
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   this->Timer->StartTimer();
@@ -2409,7 +986,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->ReportError("The tiled ray-cast mapper needs an OpenGL render window.");
     return;
   }
-  ScopedDebugEvent event("Render");
+  vtkTiledRayCastDebugEvent event("Render");
   this->ResourceCallback->RegisterGraphicsResources(window);
   if (!impl->CheckContext(window))
   {
@@ -2420,52 +997,19 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  if (!impl->DrawingDeferred && impl->InsideVolumetricPeeling(vol))
+  if (impl->Deferred.Defer(ren, vol))
   {
     // VTK's dual depth peeling hands volumes depth ranges through shader replacements written
     // for its image ray caster, which this mapper cannot take part in yet: it draws nothing in
     // the peels and draws the volume once the renderer has finished, over the composited scene,
     // as it does without depth peeling for volumes (the translucent-geometry warning below says
     // so, once).
-    impl->DeferToEndOfFrame(ren, vol);
     return;
   }
 
-  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
-  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
-  // it, the volume's property keys carry the peeling pass's depth-mask override).
-  vtkInformation* keys = vol->GetPropertyKeys();
-  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  for (vtkProp* prop = props->GetNextProp(it);
-       prop && !translucentGeometry && !impl->WarnedTranslucentGeometry;
-       prop = props->GetNextProp(it))
+  impl->WarnTranslucentGeometry(ren, vol);
+  if (!impl->CheckBlendMode())
   {
-    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
-      prop->HasTranslucentPolygonalGeometry();
-  }
-  if (translucentGeometry && !impl->WarnedTranslucentGeometry)
-  {
-    vtkWarningMacro("Translucent polygonal geometry in the same renderer is not composited "
-                    "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
-                    "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
-                    "render it in another renderer.");
-    impl->WarnedTranslucentGeometry = true;
-  }
-  if (this->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
-    this->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
-  {
-    impl->ReportError("Blend mode " + std::to_string(this->BlendMode) +
-      " is not supported (composite, maximum, minimum and average intensity, additive are). "
-      "Nothing is drawn.");
-    return;
-  }
-  if (this->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !impl->UseCompute)
-  {
-    impl->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
-                      "Nothing is drawn.");
     return;
   }
   vtkVolumeProperty* property = vol->GetProperty();
@@ -2492,129 +1036,19 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
-  // CPU work: only what changed.
-  if (!impl->UpdateMesh(input, property))
-  {
-    return;
-  }
-  if (!impl->Geometry.Compute(ren, vol, impl->Shift, impl->MeshBounds))
-  {
-    impl->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
-    return;
-  }
-  impl->Lighting.Compute(ren, vol, this->BlendMode);
-  impl->GradientOpacity.Compute(property, this->BlendMode);
-  impl->WarnLighting();
-  if (!impl->Geometry.ComputeClippingPlanes(this->ClippingPlanes, impl->MeshBounds) &&
-    !impl->WarnedClippingPlanes)
-  {
-    vtkErrorMacro(<< this->GetNumberOfClippingPlanes() << " clipping planes are set; this mapper "
-                  << "clips with the first " << vtkTiledRayCastFrameGeometry::MaximumClippingPlanes
-                  << " (as VTK's OpenGL mappers).");
-    impl->WarnedClippingPlanes = true;
-  }
-  if (impl->Geometry.ClippedAway)
-  {
-    return; // the clipping planes leave nothing of the mesh: nothing is visible
-  }
-  // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
-  // the volume (vtkTiledRayCastSampleDistance).
-  impl->FrameSampleDistance = impl->SampleDistance.Choose(this->AutoAdjustSampleDistances != 0,
-    this->ImageSampleDistance, this->MinimumImageSampleDistance, this->MaximumImageSampleDistance,
-    vol->GetAllocatedRenderTime());
   int rays[2];
-  vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, impl->FrameSampleDistance, rays);
-  if (!impl->UploadMesh(window) || !impl->UpdateTransferFunction(property, window) ||
-    !impl->UpdateVisibleMesh(window) || !impl->UpdatePrograms(window) ||
-    !impl->UpdateTargets(window, rays[0], rays[1]))
+  if (!impl->PrepareFrame(ren, vol, input, property, window, rays) ||
+    !impl->DrawFrame(window, rays))
   {
     return;
   }
-  impl->LastError.clear();
-  impl->ReadTimers(this->SynchronousStatistics);
-
-  // GPU work.
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable depthTestSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable cullSaver(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglDepthMask depthMaskSaver(state);
-  vtkOpenGLState::ScopedglDepthFunc depthFuncSaver(state);
-  vtkOpenGLState::ScopedglColorMask colorMaskSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearColorSaver(state);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  state->vtkglDisable(GL_SCISSOR_TEST);
-  state->vtkglDisable(GL_BLEND);
-
-  // GPU timers of the previous frame still in flight are not restarted: this frame is then not
-  // timed, and the statistics keep the latest times measured.
-  const bool timing = !impl->TimersPending;
-  impl->TimingThisFrame = timing;
-  if (timing)
-  {
-    impl->TotalTimer.Reset();
-    for (PhaseTimer& t : impl->PhaseTimers)
-    {
-      t.Reset();
-    }
-    impl->TimedSampleDistance = impl->FrameSampleDistance;
-  }
-  impl->StartPhase(impl->TotalTimer);
-  // The opaque geometry drawn so far ends the rays.
-  if (!impl->CaptureOpaqueDepth(window, width, height))
-  {
-    return;
-  }
-
-  state->PushFramebufferBindings();
-  state->vtkglViewport(0, 0, rays[0], rays[1]);
-  int cullFaceMode = GL_BACK;
-  state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullFaceMode);
-  impl->ActivateTextures(true);
-  vtkTiledRayCastStatistics* stats = this->Statistics;
-  stats->SetPipeline(impl->UseCompute ? "Compute" : "Fragment");
-  const bool ok = impl->UseCompute ? impl->RenderCompute(window) : impl->RenderFragment(window);
-  impl->StopPhase(impl->TotalTimer);
-  impl->TimersPending = timing;
-  state->vtkglCullFace(cullFaceMode);
-  impl->ActivateTextures(false);
-  if (!ok)
-  {
-    return;
-  }
-  if (this->SynchronousStatistics)
-  {
-    if (impl->UseCompute)
-    {
-      impl->Compute.ReadCounts(stats);
-    }
-    impl->ReadTimers(true);
-  }
-  if (impl->UseCompute && impl->Compute.GetNumberOfRaysStopped() > 0 && !impl->WarnedStoppedRays)
-  {
-    vtkWarningMacro(<< impl->Compute.GetNumberOfRaysStopped()
-                    << " rays reached the bound of steps in one boundary layer and were "
-                       "stopped; the mesh's neighbour links may loop.");
-    impl->WarnedStoppedRays = true;
-  }
-  const vtkIdType incomplete = impl->UseCompute ? impl->Compute.TakeNumberOfRaysIncomplete() : 0;
-  if (incomplete > 0)
-  {
-    // Every time: each is a frame drawn with layers missing, which the next frames are not.
-    vtkWarningMacro(<< incomplete
-                    << " rays of a recent frame missed boundary layers: the view asked for "
-                    << stats->GetNumberOfEntries()
-                    << " ray entries, far more than the frames before it, and the entry list "
-                       "did not hold them. The list has grown to fit; turn "
-                       "SynchronousStatistics on to verify every frame.");
-  }
-  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or two sets of state,
-  // colour and entry (16 B each) and two depth buffers.
+  impl->WarnAfterFrame();
+  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or the fragment
+  // pipeline's.
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
-  this->FinishRender(
-    impl->UseCompute ? impl->Compute.GetTargetBytes() + 4 * pixels : (2 * 48 + 8) * pixels);
+  this->FinishRender(impl->UseCompute
+      ? impl->Compute.GetTargetBytes() + 4 * pixels
+      : vtkTiledRayCastFragmentPipeline::GetBytesPerPixel() * pixels);
 }
 
 //------------------------------------------------------------------------------
@@ -2626,11 +1060,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   stats->SetImageSize(impl->ImageSize);
   stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
-  const vtkIdType meshBytes = impl->MeshBytes + impl->VisibleMesh.GetBytes();
+  const vtkIdType meshBytes = impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes();
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
-    impl->NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->NumberOfTets : 0.0);
-  stats->SetTransferFunctionBytes(impl->TransferFunctionBytes);
+    impl->Mesh.NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->Mesh.NumberOfTets : 0.0);
+  stats->SetTransferFunctionBytes(impl->Integration.GetBytes());
   stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");
 

@@ -18,6 +18,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastDebugEvent.h"
+#include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtk_glew.h"
 
@@ -82,6 +84,52 @@ vtkTiledRayCastComputePipeline::vtkTiledRayCastComputePipeline() = default;
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastComputePipeline::~vtkTiledRayCastComputePipeline() = default;
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
+  vtkTiledRayCastPhaseTimers& timers, vtkTiledRayCastStatistics* stats, std::string& error)
+{
+  vtkOpenGLState* state = frame.Window->GetState();
+  if (!this->BeginFrame(frame, stats, error))
+  {
+    state->PopFramebufferBindings();
+    return false;
+  }
+  {
+    vtkTiledRayCastDebugEvent event("ListEntries");
+    timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
+    this->ListEntries(frame, setup);
+    timers.Stop(vtkTiledRayCastPhaseTimers::FirstHit);
+  }
+  {
+    vtkTiledRayCastDebugEvent event("Traverse");
+    timers.Start(vtkTiledRayCastPhaseTimers::RayCasting);
+    this->Traverse(frame, setup);
+    timers.Stop(vtkTiledRayCastPhaseTimers::RayCasting);
+  }
+  const bool ok = this->FinishEntries(frame, setup, stats, error);
+
+  // Back to the caller's framebuffer and viewport: blend the premultiplied colour over it.
+  state->PopFramebufferBindings();
+  if (!ok)
+  {
+    return false;
+  }
+  vtkTiledRayCastDebugEvent event("Composite");
+  timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
+  const int* viewport = frame.Viewport;
+  state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  state->vtkglEnable(GL_BLEND);
+  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  this->Composite(frame, setup);
+  timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
+
+  stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
+  stats->SetNumberOfRayCastPasses(1);
+  stats->GetPassesPerTile().clear();
+  stats->FinishTilePasses();
+  return true;
+}
 
 //------------------------------------------------------------------------------
 int vtkTiledRayCastComputePipeline::GetNumberOfTiles(const Frame& frame)

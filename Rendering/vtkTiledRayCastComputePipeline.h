@@ -64,6 +64,7 @@ class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkTiledRayCastComputeShader;
+class vtkTiledRayCastPhaseTimers;
 class vtkTiledRayCastStatistics;
 class vtkWindow;
 
@@ -125,7 +126,17 @@ public:
     double BoundsCoverage = 0;
     float PeelEpsilon = 0;
     float ViewportOrigin[2] = { 0, 0 };
+    int Viewport[4] = { 0, 0, 0, 0 }; // the caller's, which compositing draws into
   };
+
+  /**
+   * A whole frame, phases 1 to 4, with the statistics of its tiles and passes: the caller has
+   * pushed the framebuffer bindings, set the viewport to the image and activated the textures;
+   * Render pops the bindings before compositing. False, with `error` set, when a phase failed
+   * (nothing is composited then).
+   */
+  bool Render(const Frame& frame, vtkTiledRayCastProgramSetup& setup,
+    vtkTiledRayCastPhaseTimers& timers, vtkTiledRayCastStatistics* stats, std::string& error);
 
   /**
    * Before the frame: puts the latest counts that have arrived in the statistics, sizes the

@@ -1,0 +1,70 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastDeferredDraw.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastDeferredDraw
+ * @brief   draws a volume out of VTK's volumetric depth peels, once its renderer has finished
+ *
+ * VTK's dual depth peeling hands volumes depth ranges through shader replacements written for
+ * its image ray caster, which the mapper cannot take part in: inside the peels (the volume
+ * marked with a vtkDualDepthPeelingPass as a render pass) the mapper draws nothing and this
+ * object renders the volume again on the renderer's EndEvent, over the composited scene.
+ *
+ * Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastDeferredDraw_h
+#define vtkTiledRayCastDeferredDraw_h
+
+#include "vtkWeakPointer.h" // For vtkWeakPointer
+
+class vtkObject;
+class vtkRenderer;
+class vtkUnstructuredGridVolumeMapper;
+class vtkVolume;
+
+class vtkTiledRayCastDeferredDraw
+{
+public:
+  explicit vtkTiledRayCastDeferredDraw(vtkUnstructuredGridVolumeMapper* mapper);
+  ~vtkTiledRayCastDeferredDraw();
+
+  /**
+   * True when VTK's dual depth peeling is peeling `volume` (and this is not the deferred draw
+   * itself): the mapper's Render() is then called again when `renderer` has finished its frame,
+   * and should draw nothing now.
+   */
+  bool Defer(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * No deferred draw any more (the mapper goes away).
+   */
+  void Stop();
+
+private:
+  vtkTiledRayCastDeferredDraw(const vtkTiledRayCastDeferredDraw&) = delete;
+  void operator=(const vtkTiledRayCastDeferredDraw&) = delete;
+
+  // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
+  // then marks the volume with itself as a render pass.
+  static bool InsideVolumetricPeeling(vtkVolume* volume);
+  // The renderer's EndEvent.
+  static void Draw(vtkObject* renderer, unsigned long, void* deferred, void*);
+
+  vtkUnstructuredGridVolumeMapper* Mapper;
+  vtkWeakPointer<vtkRenderer> Renderer;
+  vtkWeakPointer<vtkVolume> Volume;
+  unsigned long Observer = 0;
+  bool Pending = false;
+  bool Drawing = false;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTiledRayCastDeferredDraw.h

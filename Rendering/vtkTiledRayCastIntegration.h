@@ -1,0 +1,119 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastIntegration.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastIntegration
+ * @brief   what the walk integrates with: the transfer function, the mode, its table and textures
+ *
+ * Update() rebuilds the transfer function's node list (vtkTiledRayCastTransferFunction) where
+ * the property changed, takes the automatic mode's choice again where its inputs changed
+ * (vtkTiledRayCastIntegrationChoice: the cheapest table whose predicted error is within the
+ * mapper's budget, else partial pre-integration), builds the 2D or 3D table a table mode needs
+ * (vtkTiledRayCastPreIntegrationTable, at the resolution and lengths it needs within the GPU's
+ * limits) and uploads what changed (vtkTiledRayCastIntegrationTextures). The statistics of the
+ * mode, the predicted error, the table and the transfer function are set there.
+ *
+ * Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastIntegration_h
+#define vtkTiledRayCastIntegration_h
+
+#include "vtkNew.h"                             // For vtkNew
+#include "vtkTiledRayCastIntegrationChoice.h"   // For vtkTiledRayCastIntegrationChoice
+#include "vtkTiledRayCastIntegrationTextures.h" // For vtkTiledRayCastIntegrationTextures
+#include "vtkTiledRayCastVolumeMapper.h"        // For the integration modes
+#include "vtkType.h"                            // For vtkIdType
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTetMesh;
+class vtkTiledRayCastPreIntegrationTable;
+class vtkTiledRayCastTransferFunction;
+class vtkVolumeProperty;
+class vtkWindow;
+
+class vtkTiledRayCastIntegration
+{
+public:
+  vtkTiledRayCastIntegration();
+  ~vtkTiledRayCastIntegration();
+
+  /**
+   * What the integration of a frame depends on.
+   */
+  struct Frame
+  {
+    vtkTiledRayCastVolumeMapper* Mapper = nullptr; // its settings, statistics and warnings
+    vtkOpenGLRenderWindow* Window = nullptr;
+    vtkTetMesh* Mesh = nullptr;
+    double ScalarRange[2] = { 0, 1 };
+    double LongestEdge = 0; // in object coordinates
+    double TypicalEdge = 0; // idem
+    double ObjectToWorldNorm = 1;
+    int MaxTextureSize = 0;
+    int Max3DTextureSize = 0;
+  };
+
+  /**
+   * Update the transfer function, the automatic choice, the table and the textures for this
+   * frame. False, with `error` set, when the table's texture cannot be created.
+   */
+  bool Update(const Frame& frame, vtkVolumeProperty* property, std::string& error);
+
+  /**
+   * The integration the shaders do: the mapper's setting, or partial pre-integration's node
+   * list under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates
+   * it). AUTOMATIC_INTEGRATION is the mode the automatic choice took.
+   */
+  int GetMode(vtkTiledRayCastVolumeMapper* mapper) const;
+
+  vtkTiledRayCastTransferFunction* GetTransferFunction() { return this->TransferFunction; }
+
+  /// Bytes the mode's textures hold on the GPU.
+  vtkIdType GetBytes() const { return this->Bytes; }
+
+  void ActivateTextures(int mode, bool activate)
+  {
+    this->Textures.ActivateTextures(mode, activate);
+  }
+
+  /**
+   * The uniforms of `mode`'s textures (vtkTiledRayCastIntegrationTextures::SetUniforms).
+   */
+  void SetUniforms(vtkShaderProgram* program, int mode, double scalarShift);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkTiledRayCastIntegration(const vtkTiledRayCastIntegration&) = delete;
+  void operator=(const vtkTiledRayCastIntegration&) = delete;
+
+  // The automatic mode's choice, made again when the transfer function, the mesh, the lengths
+  // or the budget changed.
+  void ChooseIntegration(const Frame& frame, vtkVolumeProperty* property);
+  // The table of a table mode, at the resolution and lengths it needs (not yet updated).
+  void ConfigureTable(const Frame& frame, int mode);
+
+  vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
+  vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
+  vtkTiledRayCastIntegrationTextures Textures;
+  vtkTiledRayCastIntegrationChoice Choice;
+  int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
+  double PredictedError = 0.0;
+  std::vector<double> ChoiceKey;
+  vtkIdType Bytes = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTiledRayCastIntegration.h

@@ -1,0 +1,209 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastMeshBuild.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastMeshBuild.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkDataSet.h"
+#include "vtkMath.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkTetMesh.h"
+#include "vtkTetMeshBuilder.h"
+#include "vtkTetMeshCompactLayout.h"
+#include "vtkTetMeshLayout.h"
+#include "vtkTetMeshPaperLayout.h"
+#include "vtkTetMeshValidationReport.h"
+#include "vtkTiledRayCastStatistics.h"
+#include "vtkTiledRayCastVolumeMapper.h"
+#include "vtkTimerLog.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// The longest edge of any tetrahedron: the longest segment a ray can have inside one.
+double ComputeLongestEdge(vtkTetMesh* mesh)
+{
+  const double* points = mesh->GetPoints();
+  const uint32_t* tets = mesh->GetTetPoints();
+  vtkSMPThreadLocal<double> longest(0.0);
+  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double& local = longest.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const uint32_t* ids = tets + 4 * t;
+        for (int i = 0; i < 4; ++i)
+        {
+          for (int j = i + 1; j < 4; ++j)
+          {
+            local = std::max(
+              local, vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
+          }
+        }
+      }
+    });
+  double result = 0.0;
+  for (double v : longest)
+  {
+    result = std::max(result, v);
+  }
+  return std::sqrt(result);
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastMeshBuild::vtkTiledRayCastMeshBuild(vtkTiledRayCastVolumeMapper* mapper)
+  : Mapper(mapper)
+{
+  // The builder and the layouts are the mapper's own parts: their errors and warnings end
+  // up in the validation report and in the mapper's one message about them, so that a user
+  // (or a test) hears of a problem once and from the object they hold.
+  this->Silencer->SetCallback([](vtkObject*, unsigned long, void*, void*) {});
+  this->Builder->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
+  this->Builder->AddObserver(vtkCommand::WarningEvent, this->Silencer);
+  // The builder's progress is the mapper's (0 to 0.9, packing the layout the rest), so that
+  // an application can show it for a mesh that takes seconds to build.
+  this->BuildProgress->SetClientData(mapper);
+  this->BuildProgress->SetCallback(
+    [](vtkObject*, unsigned long, void* m, void* fraction)
+    {
+      static_cast<vtkTiledRayCastVolumeMapper*>(m)->UpdateProgress(
+        0.9 * *static_cast<double*>(fraction));
+    });
+  this->Builder->AddObserver(vtkCommand::ProgressEvent, this->BuildProgress);
+}
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastMeshBuild::~vtkTiledRayCastMeshBuild() = default;
+
+//------------------------------------------------------------------------------
+vtkTetMesh* vtkTiledRayCastMeshBuild::GetMesh()
+{
+  return this->Builder->GetMesh();
+}
+
+//------------------------------------------------------------------------------
+vtkTetMeshLayout* vtkTiledRayCastMeshBuild::GetLayout()
+{
+  return this->Layout;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProperty* property,
+  int maxTextureSize, int maxTextureBufferSize, std::string& error)
+{
+  vtkTiledRayCastVolumeMapper* self = this->Mapper;
+  vtkTetMeshBuilder* builder = this->Builder;
+  builder->SetSpatialOrdering(self->GetSpatialOrdering());
+  // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
+  // scalar selection set for it.
+  std::string inputError;
+  vtkDataSet* input = this->Input.Prepare(self, dataObject, property, builder, inputError);
+  if (!input)
+  {
+    error = inputError + ". Nothing is drawn.";
+    return false;
+  }
+
+  // The builder rebuilds only what changed (nothing, the scalars, the points, or everything).
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkTetMesh* mesh = builder->Build(input);
+  vtkTetMeshValidationReport* report = mesh ? mesh->GetReport() : nullptr;
+  if (report)
+  {
+    this->Input.ReportBlocks(report);
+  }
+  if (report && report->GetMTime() > this->ReportedTime)
+  {
+    self->GetValidationReport()->DeepCopy(report);
+    this->ReportedTime = report->GetMTime();
+    if (report->GetUsable() && report->HasProblems())
+    {
+      vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
+    }
+  }
+  if (!report || !report->GetUsable())
+  {
+    error = std::string("Cannot render the input: ") +
+      (report ? report->GetErrorMessage() : "no mesh") + ". Nothing is drawn.";
+    return false;
+  }
+
+  // The layout the user asked for, within the GPU's limits (or the user's lower ones): repacked
+  // only where the mesh changed (only the point texture when only the points moved).
+  const int userTexture = self->GetMaximumTextureSize();
+  const vtkIdType userBuffer = self->GetMaximumTextureBufferSize();
+  const int textureLimit = userTexture > 0 ? std::min(userTexture, maxTextureSize) : maxTextureSize;
+  const vtkIdType bufferLimit =
+    userBuffer > 0 ? std::min<vtkIdType>(userBuffer, maxTextureBufferSize) : maxTextureBufferSize;
+  const int kind = self->GetMeshLayout();
+  if (kind != this->LayoutKind || !this->Layout || textureLimit != this->LayoutTextureLimit)
+  {
+    this->LayoutTextureLimit = textureLimit;
+    if (kind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT)
+    {
+      // Rows of three texels per tetrahedron: a wide texture keeps the height small.
+      vtkNew<vtkTetMeshPaperLayout> paper;
+      paper->SetTextureWidth(std::min(textureLimit, 8192));
+      this->Layout = paper;
+    }
+    else
+    {
+      this->Layout = vtkSmartPointer<vtkTetMeshCompactLayout>::New();
+    }
+    this->Layout->AddObserver(vtkCommand::ErrorEvent, this->Silencer);
+    this->Layout->AddObserver(vtkCommand::WarningEvent, this->Silencer);
+    this->LayoutKind = kind;
+    this->NewLayout = true;
+  }
+  vtkTetMeshLayout* layout = this->Layout;
+  layout->SetMaximumTextureSize(textureLimit);
+  layout->SetMaximumTextureBufferSize(bufferLimit);
+  this->TextureBufferLimit = bufferLimit;
+  if (!layout->Update(mesh))
+  {
+    error = std::string("Cannot pack the mesh for this GPU: ") + layout->GetErrorMessage() +
+      ". Nothing is drawn.";
+    return false;
+  }
+  timer->StopTimer();
+  self->GetStatistics()->SetMeshBuildTime(timer->GetElapsedTime());
+  if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
+  {
+    self->UpdateProgress(1.0);
+  }
+
+  if (mesh->GetMTime() != this->MeshTime)
+  {
+    this->MeshTime = mesh->GetMTime();
+    this->NumberOfTets = mesh->GetNumberOfTetrahedra();
+    this->HasCellScalars = mesh->GetHasCellScalars();
+    mesh->GetShift(this->Shift);
+    double bounds[6];
+    mesh->GetBounds(bounds);
+    for (int i = 0; i < 6; ++i)
+    {
+      this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
+    }
+    mesh->GetScalarRange(this->ScalarRange);
+    this->LongestEdge = ComputeLongestEdge(mesh);
+    const double volume =
+      (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
+    // The edge of a regular tetrahedron of the mean volume: a typical segment length.
+    this->TypicalEdge =
+      this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
+  }
+  return true;
+}

@@ -1,0 +1,100 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastMeshBuild.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastMeshBuild
+ * @brief   the mapper's CPU mesh: its input built into a vtkTetMesh, packed into a layout
+ *
+ * Update() has vtkTetMeshBuilder rebuild only what changed (nothing, the scalars, the points
+ * or everything) from the mapper's input (a grid, or a composite input merged by
+ * vtkTiledRayCastMeshInput), reports the builder's findings in the mapper's validation report
+ * (warning once per new report), and repacks the layout the mapper asks for (compact or
+ * paper) within the GPU's limits or the user's lower ones. The builder's and the layouts' own
+ * errors and warnings are silenced: the mapper reports them once. The builder's progress is the
+ * mapper's. What the frames need of the mesh (bounds, shift, scalar range, edge lengths) is
+ * kept in public members, updated when the mesh changes.
+ *
+ * No OpenGL. Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastMeshBuild_h
+#define vtkTiledRayCastMeshBuild_h
+
+#include "vtkNew.h"                   // For vtkNew
+#include "vtkSmartPointer.h"          // For vtkSmartPointer
+#include "vtkTiledRayCastMeshInput.h" // For vtkTiledRayCastMeshInput
+#include "vtkType.h"                  // For vtkIdType, vtkMTimeType
+
+#include <string> // For std::string
+
+class vtkCallbackCommand;
+class vtkDataObject;
+class vtkTetMesh;
+class vtkTetMeshBuilder;
+class vtkTetMeshLayout;
+class vtkTiledRayCastVolumeMapper;
+class vtkVolumeProperty;
+
+class vtkTiledRayCastMeshBuild
+{
+public:
+  explicit vtkTiledRayCastMeshBuild(vtkTiledRayCastVolumeMapper* mapper);
+  ~vtkTiledRayCastMeshBuild();
+
+  /**
+   * Build the mesh of `input` (the scalars `property` selects) and its layout, within textures
+   * of `maxTextureSize` and texture buffers of `maxTextureBufferSize` texels (the GPU's
+   * limits). False, with `error` set, when nothing can be drawn.
+   */
+  bool Update(vtkDataObject* input, vtkVolumeProperty* property, int maxTextureSize,
+    int maxTextureBufferSize, std::string& error);
+
+  /**
+   * Whether the layout object was replaced since the last call (its arrays must all be
+   * uploaded again).
+   */
+  bool TakeNewLayout()
+  {
+    const bool changed = this->NewLayout;
+    this->NewLayout = false;
+    return changed;
+  }
+
+  vtkTetMesh* GetMesh();
+  vtkTetMeshLayout* GetLayout();
+
+  int LayoutKind = -1; // vtkTiledRayCastVolumeMapper's
+  vtkIdType TextureBufferLimit = 0;
+  vtkIdType NumberOfTets = 0;
+  bool HasCellScalars = false;
+  double MeshBounds[6] = { 0, 0, 0, 0, 0, 0 }; // in shifted object coordinates
+  double Shift[3] = { 0, 0, 0 };
+  double ScalarRange[2] = { 0, 1 };
+  double LongestEdge = 0; // in object coordinates
+  double TypicalEdge = 0; // idem
+
+private:
+  vtkTiledRayCastMeshBuild(const vtkTiledRayCastMeshBuild&) = delete;
+  void operator=(const vtkTiledRayCastMeshBuild&) = delete;
+
+  vtkTiledRayCastVolumeMapper* Mapper;
+  vtkNew<vtkCallbackCommand> Silencer;
+  vtkNew<vtkCallbackCommand> BuildProgress;
+  vtkNew<vtkTetMeshBuilder> Builder;
+  vtkTiledRayCastMeshInput Input;
+  vtkSmartPointer<vtkTetMeshLayout> Layout;
+  int LayoutTextureLimit = 0;
+  vtkMTimeType MeshTime = 0;
+  vtkMTimeType ReportedTime = 0;
+  bool NewLayout = false;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTiledRayCastMeshBuild.h

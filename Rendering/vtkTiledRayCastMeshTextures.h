@@ -1,0 +1,81 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastMeshTextures.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastMeshTextures
+ * @brief   on the GPU: the arrays of the mesh's layout, as textures and texture buffers
+ *
+ * One texture per array of a vtkTetMeshLayout (compact or paper), named in the shaders by the
+ * array's name with "in_" before it: a texture buffer, or a 2D texture for the paper layout's
+ * arrays. Uploads only the arrays whose MTime is newer than the last upload (a moving mesh sends
+ * its points only; a camera move nothing); a layout of other arrays (names, count or kinds)
+ * starts afresh.
+ *
+ * Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastMeshTextures_h
+#define vtkTiledRayCastMeshTextures_h
+
+#include "vtkType.h" // For vtkIdType, vtkMTimeType
+
+#include <memory> // For std::unique_ptr
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTetMesh;
+class vtkTetMeshLayout;
+class vtkWindow;
+
+class vtkTiledRayCastMeshTextures
+{
+public:
+  vtkTiledRayCastMeshTextures();
+  ~vtkTiledRayCastMeshTextures();
+
+  /**
+   * Upload what changed in `layout` (packed from `mesh`) since the last upload; adds the bytes
+   * uploaded to `uploaded`. False, with `error` set, when an array has a type the shaders cannot
+   * read, or when the GPU runs out of memory (the textures are then released).
+   */
+  bool Update(vtkOpenGLRenderWindow* window, vtkTetMeshLayout* layout, vtkTetMesh* mesh,
+    vtkIdType& uploaded, std::string& error);
+
+  /**
+   * Upload every array on the next Update (a new layout object).
+   */
+  void Invalidate() { this->UploadedTime = 0; }
+
+  /// Bytes held on the GPU.
+  vtkIdType GetBytes() const { return this->Bytes; }
+
+  void ActivateTextures(bool activate);
+
+  /**
+   * The texture unit of each array, as its "in_" uniform.
+   */
+  void SetUniforms(vtkShaderProgram* program);
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  vtkTiledRayCastMeshTextures(const vtkTiledRayCastMeshTextures&) = delete;
+  void operator=(const vtkTiledRayCastMeshTextures&) = delete;
+
+  struct MeshTexture;
+  std::vector<std::unique_ptr<MeshTexture>> Textures;
+  vtkMTimeType UploadedTime = 0;
+  vtkIdType Bytes = 0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTiledRayCastMeshTextures.h
