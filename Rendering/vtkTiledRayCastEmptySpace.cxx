@@ -16,6 +16,7 @@
 #include "vtkTimerLog.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <limits>
 
@@ -26,7 +27,8 @@ bool Meets(const std::vector<std::pair<double, double>>& support, double lo, dou
 {
   // The first interval that does not end before lo.
   auto it = std::lower_bound(support.begin(), support.end(), lo,
-    [](const std::pair<double, double>& interval, double value) { return interval.second < value; });
+    [](const std::pair<double, double>& interval, double value)
+    { return interval.second < value; });
   return it != support.end() && it->first <= hi;
 }
 }
@@ -38,7 +40,8 @@ std::vector<std::pair<double, double>> vtkTiledRayCastEmptySpace::ComputeSupport
   std::vector<std::pair<double, double>> support;
   const int n = tf->GetNumberOfNodes();
   const double infinity = std::numeric_limits<double>::infinity();
-  auto add = [&support](double lo, double hi) {
+  auto add = [&support](double lo, double hi)
+  {
     if (!support.empty() && lo <= support.back().second)
     {
       support.back().second = std::max(support.back().second, hi);
@@ -141,45 +144,47 @@ void vtkTiledRayCastEmptySpace::Classify(
   this->VisibleBits.assign(static_cast<size_t>(numWords), 0u);
   std::vector<vtkIdType> counts(static_cast<size_t>(numWords), 0);
   // One word (32 tetrahedra) per task item: no two threads write the same word.
-  vtkSMPTools::For(0, numWords, 1024, [&](vtkIdType firstWord, vtkIdType endWord) {
-    for (vtkIdType w = firstWord; w < endWord; ++w)
+  vtkSMPTools::For(0, numWords, 1024,
+    [&](vtkIdType firstWord, vtkIdType endWord)
     {
-      uint32_t bits = 0;
-      const vtkIdType end = std::min<vtkIdType>(32 * w + 32, numTets);
-      for (vtkIdType t = 32 * w; t < end; ++t)
+      for (vtkIdType w = firstWord; w < endWord; ++w)
       {
-        // Overlapping tetrahedra are left out of the rendering (no ray enters them); one that
-        // touches a non-finite scalar is crossed without integration.
-        if (flags[t] & (vtkTetMesh::Overlapping | vtkTetMesh::NonFiniteScalars))
+        uint32_t bits = 0;
+        const vtkIdType end = std::min<vtkIdType>(32 * w + 32, numTets);
+        for (vtkIdType t = 32 * w; t < end; ++t)
         {
-          continue;
+          // Overlapping tetrahedra are left out of the rendering (no ray enters them); one that
+          // touches a non-finite scalar is crossed without integration.
+          if (flags[t] & (vtkTetMesh::Overlapping | vtkTetMesh::NonFiniteScalars))
+          {
+            continue;
+          }
+          double lo, hi;
+          if (cellScalars)
+          {
+            lo = hi = cellScalars[t];
+          }
+          else if (pointScalars)
+          {
+            const uint32_t* ids = tetPoints + 4 * t;
+            const double s0 = pointScalars[ids[0]], s1 = pointScalars[ids[1]];
+            const double s2 = pointScalars[ids[2]], s3 = pointScalars[ids[3]];
+            lo = std::min(std::min(s0, s1), std::min(s2, s3));
+            hi = std::max(std::max(s0, s1), std::max(s2, s3));
+          }
+          else
+          {
+            continue;
+          }
+          if (std::isfinite(lo) && std::isfinite(hi) && Meets(support, lo - margin, hi + margin))
+          {
+            bits |= 1u << (t & 31);
+          }
         }
-        double lo, hi;
-        if (cellScalars)
-        {
-          lo = hi = cellScalars[t];
-        }
-        else if (pointScalars)
-        {
-          const uint32_t* ids = tetPoints + 4 * t;
-          const double s0 = pointScalars[ids[0]], s1 = pointScalars[ids[1]];
-          const double s2 = pointScalars[ids[2]], s3 = pointScalars[ids[3]];
-          lo = std::min(std::min(s0, s1), std::min(s2, s3));
-          hi = std::max(std::max(s0, s1), std::max(s2, s3));
-        }
-        else
-        {
-          continue;
-        }
-        if (std::isfinite(lo) && std::isfinite(hi) && Meets(support, lo - margin, hi + margin))
-        {
-          bits |= 1u << (t & 31);
-        }
+        this->VisibleBits[static_cast<size_t>(w)] = bits;
+        counts[static_cast<size_t>(w)] = static_cast<vtkIdType>(std::bitset<32>(bits).count());
       }
-      this->VisibleBits[static_cast<size_t>(w)] = bits;
-      counts[static_cast<size_t>(w)] = __builtin_popcount(bits);
-    }
-  });
+    });
   this->NumberOfVisible = 0;
   for (vtkIdType c : counts)
   {

@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkTiledRayCastIntegrationChoice.h"
 
+#include "vtkMath.h"
 #include "vtkSMPTools.h"
 #include "vtkTetMesh.h"
 #include "vtkTetRayIntegrator.h"
@@ -52,7 +53,8 @@ public:
     double f[3];
     for (int a = 0; a < 3; ++a)
     {
-      i[a] = std::min(static_cast<int>(g[a]), std::max(0, (a < 2 ? this->Size[0] : this->Size[2]) - 2));
+      i[a] =
+        std::min(static_cast<int>(g[a]), std::max(0, (a < 2 ? this->Size[0] : this->Size[2]) - 2));
       f[a] = g[a] - i[a];
       if ((a < 2 ? this->Size[0] : this->Size[2]) == 1)
       {
@@ -100,8 +102,8 @@ public:
       const double lengthGrid = longest > 0 ? part * (this->Size[2] - 1) / longest : 0;
       for (int k = 0; k < parts; ++k)
       {
-        const auto piece = this->Lookup(sf + (sb - sf) * k / parts,
-          sf + (sb - sf) * (k + 1) / parts, lengthGrid);
+        const auto piece =
+          this->Lookup(sf + (sb - sf) * k / parts, sf + (sb - sf) * (k + 1) / parts, lengthGrid);
         Over(piece, 1 - std::exp(-piece[3]), rgba);
       }
       return;
@@ -184,8 +186,8 @@ void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double n
   std::uniform_int_distribution<vtkIdType> pickTet(0, numTets - 1);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> normal;
-  for (int attempt = 0; attempt < 4 * NumberOfSegments &&
-       static_cast<int>(this->Segments.size()) < NumberOfSegments;
+  for (int attempt = 0;
+       attempt < 4 * NumberOfSegments && static_cast<int>(this->Segments.size()) < NumberOfSegments;
        ++attempt)
   {
     const vtkIdType t = pickTet(random);
@@ -213,7 +215,8 @@ void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double n
       w[k] /= sum;
     }
     double dir[3] = { normal(random), normal(random), normal(random) };
-    // The barycentric weights change along dir by the solution of [p1-p0 p2-p0 p3-p0] b = dir.
+    // The barycentric weights change along dir by the solution of [p1-p0 p2-p0 p3-p0] b = dir
+    // (b the rates of weights 1-3; weight 0 takes minus their sum).
     double e[3][3];
     for (int k = 0; k < 3; ++k)
     {
@@ -222,30 +225,13 @@ void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double n
         e[a][k] = p[k + 1][a] - p[0][a];
       }
     }
-    const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-      e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-      e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-    if (!(std::abs(det) > 0))
+    if (!(std::abs(vtkMath::Determinant3x3(e)) > 0))
     {
       continue;
     }
-    double rate[4] = { 0, 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      double m[3][3];
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          m[r][c] = c == k ? dir[r] : e[r][c];
-        }
-      }
-      rate[k + 1] = (m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                      m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                      m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])) /
-        det;
-      rate[0] -= rate[k + 1];
-    }
+    double rate[4];
+    vtkMath::LinearSolve3x3(e, dir, rate + 1);
+    rate[0] = -(rate[1] + rate[2] + rate[3]);
     double forward = VTK_DOUBLE_MAX, backward = VTK_DOUBLE_MAX;
     for (int k = 0; k < 4; ++k)
     {
@@ -295,14 +281,16 @@ double vtkTiledRayCastIntegrationChoice::PredictError(vtkTiledRayCastPreIntegrat
   // Each segment's exact and table colours.
   std::vector<std::array<double, 4>> exact(n), approximate(n);
   const TableReader reader(table);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n), [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType i = begin; i < end; ++i)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const Segment& s = this->Segments[i];
-      this->Exact->Integrate(s.Front, s.Back, s.Length, exact[i].data());
-      reader.Integrate(s.Front, s.Back, s.Length, approximate[i].data());
-    }
-  });
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const Segment& s = this->Segments[i];
+        this->Exact->Integrate(s.Front, s.Back, s.Length, exact[i].data());
+        reader.Integrate(s.Front, s.Back, s.Length, approximate[i].data());
+      }
+    });
   for (size_t i = 0; i < n; ++i)
   {
     for (int c = 0; c < 4; ++c)

@@ -28,8 +28,8 @@ void UploadWords(vtkOpenGLRenderWindow* window, vtkOpenGLBufferObject* buffer,
   const uint32_t none = 0;
   const vtkIdType stored = count > 0 ? count : 1;
   buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-  buffer->Upload(count > 0 ? words : &none, static_cast<size_t>(stored),
-    vtkOpenGLBufferObject::TextureBuffer);
+  buffer->Upload(
+    count > 0 ? words : &none, static_cast<size_t>(stored), vtkOpenGLBufferObject::TextureBuffer);
   texture->SetContext(window);
   texture->SetInternalFormat(GL_R32UI);
   texture->CreateTextureBuffer(static_cast<unsigned int>(stored), 1, VTK_UNSIGNED_INT, buffer);
@@ -59,8 +59,9 @@ bool vtkTiledRayCastVisibleMesh::Update(vtkOpenGLRenderWindow* window, vtkTetMes
                                    : mesh->GetNumberOfBoundaryFaces();
   if (numFaces > maximumTextureBufferSize)
   {
-    error = "The mesh has more " + std::string(skips ? "faces around its visible part" : "boundary faces") +
-      " (" + std::to_string(numFaces) + ") than the texture buffer limit (" +
+    error = "The mesh has more " +
+      std::string(skips ? "faces around its visible part" : "boundary faces") + " (" +
+      std::to_string(numFaces) + ") than the texture buffer limit (" +
       std::to_string(maximumTextureBufferSize) + ")";
     return false;
   }
@@ -73,8 +74,8 @@ bool vtkTiledRayCastVisibleMesh::Update(vtkOpenGLRenderWindow* window, vtkTetMes
   if (skips)
   {
     const std::vector<uint32_t>& bits = this->EmptySpace.GetVisibleBits();
-    UploadWords(window, this->BitBuffer, this->BitTexture, bits.data(),
-      static_cast<vtkIdType>(bits.size()));
+    UploadWords(
+      window, this->BitBuffer, this->BitTexture, bits.data(), static_cast<vtkIdType>(bits.size()));
     this->Bytes += 4 * static_cast<vtkIdType>(bits.size());
     uploaded += 4 * static_cast<vtkIdType>(bits.size());
   }
