@@ -254,9 +254,10 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   // One entry per pixel to start with; the list grows to what views need (ListEntries).
   ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
   ok = ok && this->EntryCount.Allocate(sizeof(std::uint32_t));
-  for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
+  for (int i = 0; i < 2; ++i)
   {
-    ok = ok && counts.Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
+    ok = ok && this->RayCounts[i].Allocate(NumberOfRayCounts * sizeof(std::uint32_t));
+    ok = ok && this->CountsRead[i].AllocateForReading(NumberOfRayCounts * sizeof(std::uint32_t));
   }
   if (!ok)
   {
@@ -338,7 +339,7 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   const int last = this->CountsBuffer;
   const int next = 1 - last;
   bool read = false;
-  if (this->CountsPending[last] && this->RayCounts[last].IsWritten(false))
+  if (this->CountsPending[last] && this->CountsRead[last].IsWritten(false))
   {
     this->ReadCountsInto(last, stats);
     read = true;
@@ -351,7 +352,7 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
     }
     else
     {
-      this->RayCounts[next].IsWritten(true);
+      this->CountsRead[next].IsWritten(true);
       this->ReadCountsInto(next, stats);
     }
   }
@@ -365,8 +366,8 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   // animation) are not verified: their entry counts change by little from one frame to the
   // next, which the list's headroom absorbs.
   const float* d = frame.ViewDirection;
-  const float turn = d[0] * this->LastDirection[0] + d[1] * this->LastDirection[1] +
-    d[2] * this->LastDirection[2];
+  const float turn =
+    d[0] * this->LastDirection[0] + d[1] * this->LastDirection[1] + d[2] * this->LastDirection[2];
   const bool jump = turn < 0.866f || frame.BoundsCoverage > 1.25 * this->LastCoverage + 1e-3;
   this->Verifying = frame.Verify || !this->Verified || jump ||
     frame.NumberOfBoundaryFaces != this->ListedFaces ||
@@ -434,7 +435,8 @@ void vtkTiledRayCastComputePipeline::ListEntries(
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastComputePipeline::Traverse(const Frame& frame, vtkTiledRayCastProgramSetup& setup)
+void vtkTiledRayCastComputePipeline::Traverse(
+  const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
   vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
   counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
@@ -456,8 +458,11 @@ void vtkTiledRayCastComputePipeline::Traverse(const Frame& frame, vtkTiledRayCas
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
   // The entry count goes with the frame's counts (read with them, without waiting).
-  this->EntryCount.CopyTo(counts, 0, CountEntriesAsked * sizeof(std::uint32_t), sizeof(std::uint32_t));
-  counts.MarkWritten();
+  this->EntryCount.CopyTo(
+    counts, 0, CountEntriesAsked * sizeof(std::uint32_t), sizeof(std::uint32_t));
+  vtkTiledRayCastStorageBuffer& read = this->CountsRead[this->CountsBuffer];
+  counts.CopyTo(read, 0, 0, NumberOfRayCounts * sizeof(std::uint32_t));
+  read.MarkWritten();
   this->CountsPending[this->CountsBuffer] = true;
 }
 
@@ -510,7 +515,7 @@ void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats
 {
   if (this->CountsPending[this->CountsBuffer])
   {
-    this->RayCounts[this->CountsBuffer].IsWritten(true);
+    this->CountsRead[this->CountsBuffer].IsWritten(true);
     this->ReadCountsInto(this->CountsBuffer, stats);
   }
 }
@@ -519,7 +524,7 @@ void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats
 void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats)
 {
   std::uint32_t counts[NumberOfRayCounts];
-  this->RayCounts[buffer].Read(0, sizeof(counts), counts);
+  this->CountsRead[buffer].Read(0, sizeof(counts), counts);
   this->CountsPending[buffer] = false;
   stats->SetNumberOfRays(counts[CountRays]);
   stats->SetNumberOfNearPlaneRays(counts[CountNearPlaneRays]);
@@ -560,9 +565,10 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->EntryNodes.ReleaseGraphicsResources();
   this->EntryCount.ReleaseGraphicsResources();
-  for (vtkTiledRayCastStorageBuffer& counts : this->RayCounts)
+  for (int i = 0; i < 2; ++i)
   {
-    counts.ReleaseGraphicsResources();
+    this->RayCounts[i].ReleaseGraphicsResources();
+    this->CountsRead[i].ReleaseGraphicsResources();
   }
   this->EntryCapacity = 0;
   this->EntriesAsked = 0;

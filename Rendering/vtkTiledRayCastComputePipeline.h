@@ -237,8 +237,10 @@ private:
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   vtkTiledRayCastStorageBuffer EntryNodes;
   vtkTiledRayCastStorageBuffer EntryCount;
-  // The counts of the last two frames: one being written while the other is read.
+  // The counts of the last two frames: one being written while the other is read. The
+  // traversal counts in GPU memory (atomics), then copies them where the CPU reads them.
   vtkTiledRayCastStorageBuffer RayCounts[2];
+  vtkTiledRayCastStorageBuffer CountsRead[2];
   bool CountsPending[2] = { false, false };
   int CountsBuffer = 0; // this frame's
   vtkIdType EntryCapacity = 0;

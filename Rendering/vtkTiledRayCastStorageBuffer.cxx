@@ -12,11 +12,16 @@
 
 #include "vtk_glew.h"
 
+#include <cstring>
 #include <vector>
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastStorageBuffer::Allocate(size_t bytes)
 {
+  if (this->Mapped)
+  {
+    this->ReleaseGraphicsResources(); // immutable storage: start a new buffer
+  }
   if (!this->Handle)
   {
     glGenBuffers(1, &this->Handle);
@@ -29,6 +34,38 @@ bool vtkTiledRayCastStorageBuffer::Allocate(size_t bytes)
   glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, GL_DYNAMIC_COPY);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
   if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    this->ReleaseGraphicsResources();
+    return false;
+  }
+  this->Size = bytes;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastStorageBuffer::AllocateForReading(size_t bytes)
+{
+  if (!GLEW_VERSION_4_4 && !GLEW_ARB_buffer_storage)
+  {
+    return this->Allocate(bytes); // read with glGetBufferSubData
+  }
+  // Storage is immutable: a new size needs a new buffer.
+  this->ReleaseGraphicsResources();
+  glGenBuffers(1, &this->Handle);
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i)
+  {
+  }
+  // Coherent: the GPU's writes are visible to the CPU once a fence after them has signalled.
+  const GLbitfield flags =
+    GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT | GL_CLIENT_STORAGE_BIT;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, this->Handle);
+  glBufferStorage(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, flags);
+  this->Mapped = glGetError() == GL_NO_ERROR
+    ? glMapBufferRange(GL_COPY_WRITE_BUFFER, 0, static_cast<GLsizeiptr>(bytes),
+        GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT)
+    : nullptr;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  if (!this->Mapped)
   {
     this->ReleaseGraphicsResources();
     return false;
@@ -73,6 +110,11 @@ void vtkTiledRayCastStorageBuffer::Write(size_t offset, size_t bytes, const void
 //------------------------------------------------------------------------------
 void vtkTiledRayCastStorageBuffer::Read(size_t offset, size_t bytes, void* data) const
 {
+  if (this->Mapped)
+  {
+    std::memcpy(data, static_cast<const unsigned char*>(this->Mapped) + offset, bytes);
+    return;
+  }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->Handle);
   glGetBufferSubData(
     GL_SHADER_STORAGE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
@@ -122,6 +164,13 @@ void vtkTiledRayCastStorageBuffer::ReleaseGraphicsResources()
   }
   if (this->Handle)
   {
+    if (this->Mapped)
+    {
+      glBindBuffer(GL_COPY_WRITE_BUFFER, this->Handle);
+      glUnmapBuffer(GL_COPY_WRITE_BUFFER);
+      glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+      this->Mapped = nullptr;
+    }
     glDeleteBuffers(1, &this->Handle);
   }
   this->Handle = 0;
