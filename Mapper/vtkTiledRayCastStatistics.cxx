@@ -30,6 +30,7 @@ vtkTiledRayCastStatistics::~vtkTiledRayCastStatistics()
 void vtkTiledRayCastStatistics::ResetFrameCounts()
 {
   this->Rendered = false;
+  this->SceneDepthCopied = false;
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->NumberOfRays = 0;
   this->NumberOfLayers = 0;
@@ -103,8 +104,8 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
     {
       text << " (" << this->NumberOfIncompleteRays << " rays incomplete)";
     }
-    text << ", " << this->NumberOfLayers << " layers, "
-         << this->NumberOfTiles << " tiles (" << this->NumberOfTilesSkipped << " empty)";
+    text << ", " << this->NumberOfLayers << " layers, " << this->NumberOfTiles << " tiles ("
+         << this->NumberOfTilesSkipped << " empty)";
   }
   else
   {
@@ -115,6 +116,7 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
          << this->MaximumPassesPerTile << ")";
   }
   text << ", " << this->NumberOfRaysTerminatedEarly << " rays terminated early, "
+       << (this->SceneDepthCopied ? "scene depth copied, " : "no scene depth, ")
        << this->NumberOfVisibleTetrahedra << " tets visible, " << this->NumberOfEntryFaces
        << " entry faces; GPU ms: " << (compute ? "entry pass " : "first hit ")
        << this->FirstHitTime;
@@ -133,6 +135,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Rendered: " << this->Rendered << "\n";
+  os << indent << "SceneDepthCopied: " << this->SceneDepthCopied << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";

@@ -53,6 +53,16 @@ public:
 
   ///@{
   /**
+   * Whether the last frame copied the scene's depth buffer (what opaque geometry drawn before
+   * the volume leaves there, which ends the rays). Skipped when the renderer cleared the depth
+   * and draws no prop but volumes: the rays then run to the far plane without a copy.
+   */
+  vtkSetMacro(SceneDepthCopied, bool);
+  vtkGetMacro(SceneDepthCopied, bool);
+  ///@}
+
+  ///@{
+  /**
    * Image size of the last render (of its rays: the viewport in pixels divided by the image
    * sample distance it used, vtkTiledRayCastVolumeMapper::SetImageSampleDistance), that
    * distance, and the number of rays that entered the mesh.
@@ -285,6 +295,7 @@ protected:
   ~vtkTiledRayCastStatistics() override;
 
   bool Rendered = false;
+  bool SceneDepthCopied = false;
   int ImageSize[2] = { 0, 0 };
   double ImageSampleDistance = 1.0;
   vtkIdType NumberOfRays = 0;

@@ -29,8 +29,8 @@
 #include "vtkTiledRayCastDeferredDraw.h"
 #include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
-#include "vtkTiledRayCastIntegration.h"
 #include "vtkTiledRayCastGradientOpacityNodes.h"
+#include "vtkTiledRayCastIntegration.h"
 #include "vtkTiledRayCastLighting.h"
 #include "vtkTiledRayCastMeshBuild.h"
 #include "vtkTiledRayCastMeshTextures.h"
@@ -48,7 +48,6 @@
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
-
 
 #include <algorithm>
 #include <limits>
@@ -158,8 +157,9 @@ public:
   // Transfer function.
   vtkTiledRayCastIntegration Integration;
 
-  // The scene's depth, which ends the rays.
+  // The scene's depth, which ends the rays, and whether this frame's scene may have any.
   vtkTiledRayCastOpaqueDepth OpaqueDepth;
+  bool SceneDepth = true;
   // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
   int ImageSize[2] = { 0, 0 };
   vtkTiledRayCastSampleDistance SampleDistance;
@@ -340,16 +340,17 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   if (lighting.NumberOfPositionalLights > 0 && !this->WarnedPositionalLights)
   {
-    vtkWarningWithObjectMacro(self, "Shading lights every light as a directional one: a "
-                                    "positional light shines from its position towards its focal "
-                                    "point, without attenuation or cone.");
+    vtkWarningWithObjectMacro(self,
+      "Shading lights every light as a directional one: a "
+      "positional light shines from its position towards its focal "
+      "point, without attenuation or cone.");
     this->WarnedPositionalLights = true;
   }
   if (lighting.NumberOfIgnoredLights > 0 && !this->WarnedIgnoredLights)
   {
-    vtkWarningWithObjectMacro(self, "Shading uses the first "
-        << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
-        << lighting.NumberOfIgnoredLights << " more are ignored.");
+    vtkWarningWithObjectMacro(self,
+      "Shading uses the first " << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
+                                << lighting.NumberOfIgnoredLights << " more are ignored.");
     this->WarnedIgnoredLights = true;
   }
   if (this->GradientOpacity.Approximated && !this->WarnedGradientOpacity)
@@ -363,8 +364,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
   }
   if (lighting.Enabled && this->Mesh.HasCellScalars && !this->WarnedShadedCellScalars)
   {
-    vtkWarningWithObjectMacro(self, "Shading cell scalars: they are constant per cell, their "
-                                    "gradient is zero, so only the ambient term lights them.");
+    vtkWarningWithObjectMacro(self,
+      "Shading cell scalars: they are constant per cell, their "
+      "gradient is zero, so only the ambient term lights them.");
     this->WarnedShadedCellScalars = true;
   }
 }
@@ -404,8 +406,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
   std::string error;
-  if (!this->Mesh.Update(dataObject, property, this->MaxTextureSize, this->MaxTextureBufferSize,
-        error))
+  if (!this->Mesh.Update(
+        dataObject, property, this->MaxTextureSize, this->MaxTextureBufferSize, error))
   {
     this->ReportError(error);
     return false;
@@ -545,7 +547,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
   vtkOpenGLRenderWindow* window, int width, int height)
 {
   std::string error;
-  if (!this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error))
+  this->Self->Statistics->SetSceneDepthCopied(this->SceneDepth);
+  if (this->SceneDepth
+      ? !this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error)
+      : !this->OpaqueDepth.SetFar(window, this->ImageSize, error))
   {
     this->ReportError(error);
     return false;
@@ -852,6 +857,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
     this->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return false;
   }
+  this->SceneDepth = vtkTiledRayCastOpaqueDepth::SceneMayHaveDepth(ren);
   this->Lighting.Compute(ren, vol, self->BlendMode);
   this->GradientOpacity.Compute(property, self->BlendMode);
   this->WarnLighting();

@@ -10,11 +10,16 @@
 =========================================================================*/
 #include "vtkTiledRayCastOpaqueDepth.h"
 
+#include "vtkActor2D.h"
 #include "vtkObject.h" // For vtkOpenGLError.h, where OpenGL errors are reported
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
+#include "vtkProp.h"
+#include "vtkPropCollection.h"
+#include "vtkProperty2D.h"
+#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
@@ -121,6 +126,59 @@ bool vtkTiledRayCastOpaqueDepth::Allocate(
     state->vtkglReadBuffer(GL_NONE);
     state->PopFramebufferBindings();
     this->Format = format;
+    this->HoldsFar = false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastOpaqueDepth::SceneMayHaveDepth(vtkRenderer* renderer)
+{
+  if (renderer->GetPreserveDepthBuffer() || !renderer->GetErase())
+  {
+    return true; // the depth of the renderers drawn before it
+  }
+  vtkPropCollection* props = renderer->GetViewProps();
+  vtkCollectionSimpleIterator it;
+  props->InitTraversal(it);
+  while (vtkProp* prop = props->GetNextProp(it))
+  {
+    if (!prop->GetVisibility() || prop->IsA("vtkVolume"))
+    {
+      continue; // volumes write no depth (they draw after opaque and translucent geometry)
+    }
+    vtkActor2D* actor2D = vtkActor2D::SafeDownCast(prop);
+    if (actor2D && actor2D->GetProperty()->GetDisplayLocation() == VTK_FOREGROUND_LOCATION)
+    {
+      continue; // drawn in the overlay, after the volumes
+    }
+    return true;
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastOpaqueDepth::SetFar(
+  vtkOpenGLRenderWindow* window, const int imageSize[2], std::string& error)
+{
+  // The format of a texture that already exists is kept: reallocating to another would only
+  // cost a copy when opaque geometry comes back.
+  const unsigned int format = this->Texture->GetHandle() ? this->Format : GL_NONE;
+  if (!this->Allocate(window, format, imageSize[0], imageSize[1], error))
+  {
+    return false;
+  }
+  if (!this->HoldsFar)
+  {
+    vtkOpenGLState* state = window->GetState();
+    state->PushDrawFramebufferBinding();
+    this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    state->PopDrawFramebufferBinding();
+    this->HoldsFar = true;
   }
   return true;
 }
@@ -147,6 +205,7 @@ bool vtkTiledRayCastOpaqueDepth::Capture(vtkOpenGLRenderWindow* window, const in
   }
   state->PushDrawFramebufferBinding();
   this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  this->HoldsFar = format == GL_NONE;
   if (format == GL_NONE)
   {
     // Depth 1 everywhere: the rays run to the far plane.
@@ -178,6 +237,7 @@ bool vtkTiledRayCastOpaqueDepth::Capture(vtkOpenGLRenderWindow* window, const in
 //------------------------------------------------------------------------------
 void vtkTiledRayCastOpaqueDepth::ReleaseGraphicsResources(vtkWindow* window)
 {
+  this->HoldsFar = false;
   this->Framebuffer->ReleaseGraphicsResources(window);
   this->Texture->ReleaseGraphicsResources(window);
 }

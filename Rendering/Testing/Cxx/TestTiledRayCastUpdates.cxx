@@ -13,9 +13,12 @@
 // several windows. Every image is checked against the exact reference renderer.
 #include "TiledRayCastTestScene.h"
 
+#include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkLight.h"
 #include "vtkPoints.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
 
 namespace
 {
@@ -81,6 +84,31 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   ok = Expect(Uploaded(mapper) == 0, "a camera move uploads nothing") && ok;
   ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "camera moved") && ok;
 
+  // The scene's depth is copied only when something may have drawn it: an opaque sphere in the
+  // volume ends the rays at its surface; once it is removed the rays run to the far plane again
+  // (a stale copy of its depth would still stop them there).
+  ok =
+    Expect(!mapper->GetStatistics()->GetSceneDepthCopied(), "volumes only: no depth copied") && ok;
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(volume->GetCenter());
+  sphere->SetRadius(0.15 * volume->GetLength());
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(sphereMapper);
+  renderer->AddActor(ball);
+  window->Render();
+  ok =
+    Expect(mapper->GetStatistics()->GetSceneDepthCopied(), "an opaque actor: depth copied") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "opaque sphere") && ok;
+  renderer->RemoveActor(ball);
+  window->Render();
+  ok =
+    Expect(!mapper->GetStatistics()->GetSceneDepthCopied(), "actor removed: no depth copied") && ok;
+  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "sphere removed") && ok;
+
   // Shading: lights are uniforms of the frame. A camera move carries the headlight along, a scene
   // light added or moved relights the volume; none uploads anything.
   vtkVolumeProperty* shaded = volume->GetProperty();
@@ -93,7 +121,8 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   renderer->ResetCameraClippingRange();
   window->Render();
   ok = Expect(Uploaded(mapper) == 0, "shaded: a camera move uploads nothing") && ok;
-  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, camera moved") && ok;
+  ok =
+    trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, camera moved") && ok;
   vtkNew<vtkLight> sceneLight;
   sceneLight->SetLightTypeToSceneLight();
   const double* centre = volume->GetCenter();
@@ -103,10 +132,12 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   renderer->AddLight(sceneLight);
   window->Render();
   ok = Expect(Uploaded(mapper) == 0, "shaded: a light added uploads nothing") && ok;
-  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light added") && ok;
+  ok =
+    trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light added") && ok;
   sceneLight->SetPosition(centre[0] - 3.0, centre[1] + 1.0, centre[2]);
   window->Render();
-  ok = trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light moved") && ok;
+  ok =
+    trctest::CheckAgainstReference(window, renderer, volume, bounds, "shaded, light moved") && ok;
   renderer->RemoveLight(sceneLight);
   shaded->ShadeOff();
 
