@@ -296,30 +296,33 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     ours("fragment partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
     return settings;
   }
+  // The mapper's defaults: the automatic integration mode (the cheapest within 1/255 of exact),
+  // the compact layout; partial pre-integration, exact, next to them.
   const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
-  ours("compute default", partial, compact, 0, 256, 0);
+  const int automatic = M::AUTOMATIC_INTEGRATION;
+  ours("compute default", automatic, compact, 0, 256, 0);
   if (o.TransferFunction != "ramp")
   {
-    ours("compute no-skipping", partial, compact, 0, 256, 0, 4, false);
+    ours("compute no-skipping", automatic, compact, 0, 256, 0, 4, false);
   }
   if (o.Rate > 0)
   {
     std::ostringstream name;
     name << "compute interactive " << o.Rate << "/s";
-    ours(name.str(), partial, compact, 0, 256, 0);
+    ours(name.str(), automatic, compact, 0, 256, 0);
     settings.back().Rate = o.Rate;
   }
+  ours("compute partial compact", partial, compact, 0, 256, 0);
   if (o.OursOnly)
   {
     return settings;
   }
-  ours("fragment default", partial, compact, 0, 256, 0);
+  ours("fragment default", automatic, compact, 0, 256, 0);
   if (o.Sweep != "pipelines")
   {
     ours("compute partial paper", partial, M::PAPER_LAYOUT, 0, 256, 0);
     ours("compute table3d compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
     ours("compute table2d compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
-    ours("compute automatic", M::AUTOMATIC_INTEGRATION, compact, 0, 256, 0);
     ours("fragment partial compact N16 T256", partial, compact, 16, 256, 0);
     ours("fragment partial paper N0 T256", partial, M::PAPER_LAYOUT, 0, 256, 0);
   }

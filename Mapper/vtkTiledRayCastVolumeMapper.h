@@ -99,14 +99,18 @@ public:
      * The cheapest of the three whose predicted error stays within MaximumError: the 2D table,
      * else the 3D table, else partial pre-integration. The error is predicted from the mesh's
      * segments and the transfer function when either changes (docs/mapper.md, "Automatic
-     * integration"); GetStatistics()->GetIntegrationMode() says which mode was taken.
+     * integration"); GetStatistics()->GetIntegrationMode() says which mode was taken. The
+     * choice is made on a worker thread: until it is, frames use partial pre-integration
+     * (the first choice of a mapper, and every one with SynchronousStatistics, is waited for).
      */
     AUTOMATIC_INTEGRATION = 3
   };
 
   ///@{
   /**
-   * The integration mode (see IntegrationModes). Default PARTIAL_PRE_INTEGRATION.
+   * The integration mode (see IntegrationModes). Default AUTOMATIC_INTEGRATION: within
+   * MaximumError (1/255) of the exact integral, the cheapest mode; PARTIAL_PRE_INTEGRATION
+   * for the exact integral whatever it costs.
    */
   vtkSetClampMacro(IntegrationMode, int, PARTIAL_PRE_INTEGRATION, AUTOMATIC_INTEGRATION);
   vtkGetMacro(IntegrationMode, int);
@@ -253,8 +257,14 @@ public:
    * AverageIPScalarRange, gray and opaque) and additive (that integral per scalar opacity unit
    * distance, gray, clamped to 1). Exact along each linear segment; the compute pipeline only.
    */
-  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(vtkVolumeMapper::MINIMUM_INTENSITY_BLEND); }
-  void SetBlendModeToAverageIntensity() { this->SetBlendMode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND); }
+  void SetBlendModeToMinimumIntensity()
+  {
+    this->SetBlendMode(vtkVolumeMapper::MINIMUM_INTENSITY_BLEND);
+  }
+  void SetBlendModeToAverageIntensity()
+  {
+    this->SetBlendMode(vtkVolumeMapper::AVERAGE_INTENSITY_BLEND);
+  }
   void SetBlendModeToAdditive() { this->SetBlendMode(vtkVolumeMapper::ADDITIVE_BLEND); }
   vtkSetVector2Macro(AverageIPScalarRange, double);
   vtkGetVectorMacro(AverageIPScalarRange, double, 2);
@@ -407,8 +417,8 @@ public:
    * needs (OpenGL 3.3 or 3.2 with GL_ARB_explicit_attrib_location for the fragment pipeline and
    * the automatic choice, 4.3 for the compute pipeline) and the blend mode is composite. The
    * property is not consulted (may be null): whether it suits the input's scalars (several
-   * components, see VectorMode) is known only with the input, and refused at Render(). VTK's name and
-   * signature, as on vtkGPUVolumeRayCastMapper; 0 in this abstract class, the OpenGL
+   * components, see VectorMode) is known only with the input, and refused at Render(). VTK's name
+   * and signature, as on vtkGPUVolumeRayCastMapper; 0 in this abstract class, the OpenGL
    * implementation answers.
    */
   virtual int IsRenderSupported(vtkRenderWindow* window, vtkVolumeProperty* property);
@@ -438,7 +448,7 @@ protected:
   // vtkUnstructuredGridBase or vtkDataObjectTree.
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
-  int IntegrationMode = PARTIAL_PRE_INTEGRATION;
+  int IntegrationMode = AUTOMATIC_INTEGRATION;
   int MeshLayout = COMPACT_LAYOUT;
   bool SpatialOrdering = true;
   int Pipeline = AUTOMATIC_PIPELINE;

@@ -449,6 +449,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   frame.ObjectToWorldNorm = this->Geometry.ObjectToWorldNorm;
   frame.MaxTextureSize = this->MaxTextureSize;
   frame.Max3DTextureSize = this->Max3DTextureSize;
+  frame.WaitForChoice = this->Self->SynchronousStatistics;
   std::string error;
   if (!this->Integration.Update(frame, property, error))
   {

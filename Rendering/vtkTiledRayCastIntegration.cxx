@@ -17,10 +17,23 @@
 #include "vtkTimerLog.h"
 #include "vtkVolumeMapper.h"
 
+#include <algorithm>
 #include <cmath>
 
+namespace
+{
+// x rounded (by `round`: std::ceil or std::round) to a power of 2^(1/8).
+double Quantized(double x, double (*round)(double))
+{
+  return x > 0 ? std::exp2(round(8.0 * std::log2(x)) / 8.0) : x;
+}
+}
+
 //------------------------------------------------------------------------------
-vtkTiledRayCastIntegration::vtkTiledRayCastIntegration() = default;
+vtkTiledRayCastIntegration::vtkTiledRayCastIntegration()
+  : Table(vtkSmartPointer<vtkTiledRayCastPreIntegrationTable>::New())
+{
+}
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastIntegration::~vtkTiledRayCastIntegration() = default;
@@ -84,8 +97,11 @@ bool vtkTiledRayCastIntegration::Update(
     // A table of the whole transfer function, at the resolution it needs, within the GPU's
     // limits; rebuilt only when the transfer function, the lengths or the mode changed.
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
-    this->ConfigureTable(frame, mode);
-    table->Update(property, this->TransferFunction, frame.ScalarRange);
+    if (self->GetIntegrationMode() != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
+    {
+      this->ConfigureTable(frame, mode);
+      table->Update(property, this->TransferFunction, frame.ScalarRange);
+    }
     if (!this->Textures.UpdateTable(window, table, mode, self, uploaded, error))
     {
       return false;
@@ -121,43 +137,53 @@ void vtkTiledRayCastIntegration::ConfigureTable(const Frame& frame, int mode)
 void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolumeProperty* property)
 {
   vtkTetMesh* mesh = frame.Mesh;
+  vtkTiledRayCastVolumeMapper* self = frame.Mapper;
   const double norm = frame.ObjectToWorldNorm;
+  // Lengths in steps of 2^(1/8): a mesh whose points move (a deforming mesh, every frame) keeps
+  // its choice and table while its edges stay within a step; the table then covers lengths up
+  // to the step above the longest edge.
+  const double longest = Quantized(frame.LongestEdge * norm, std::ceil);
+  const double reference = Quantized(0.5 * frame.TypicalEdge * norm / std::sqrt(3.0), std::round);
   const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
-    static_cast<double>(mesh->GetMTime()), norm, frame.Mapper->GetMaximumError(),
-    static_cast<double>(frame.Mapper->GetPreIntegrationTableScalarSize()),
-    static_cast<double>(frame.Mapper->GetPreIntegrationTableLengthSize()) };
-  if (key == this->ChoiceKey)
+    static_cast<double>(mesh->GetTopologyTime()), static_cast<double>(mesh->GetScalarsTime()),
+    longest, reference, self->GetMaximumError(),
+    static_cast<double>(self->GetPreIntegrationTableScalarSize()),
+    static_cast<double>(self->GetPreIntegrationTableLengthSize()) };
+  if (key != this->ChoiceKey)
+  {
+    this->ChoiceKey = key;
+    vtkTiledRayCastAutomaticIntegration::Settings settings;
+    std::copy(frame.ScalarRange, frame.ScalarRange + 2, settings.ScalarRange);
+    settings.MaximumError = self->GetMaximumError();
+    settings.RequestedScalarSize = self->GetPreIntegrationTableScalarSize();
+    settings.RequestedLengthSize = self->GetPreIntegrationTableLengthSize();
+    settings.MaxTextureSize = frame.MaxTextureSize;
+    settings.Max3DTextureSize = frame.Max3DTextureSize;
+    settings.MaximumLength = longest;
+    settings.ReferenceLength = reference;
+    this->Automatic.Start(mesh, norm, property, settings);
+    // Exact until the choice is made: never a table that was not checked against the budget.
+    this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
+    this->PredictedError = 0.0;
+  }
+  vtkTiledRayCastAutomaticIntegration::Choice choice;
+  if (!this->Automatic.Take(choice, frame.WaitForChoice || !this->ChoiceMade))
   {
     return;
   }
-  this->ChoiceKey = key;
-  // Cheapest first (measured on the H200: the 2D table, the 3D table, partial pre-integration);
-  // each table is kept if its predicted error is within the budget.
-  this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
-  this->PredictedError = 0.0;
-  this->Choice.SampleSegments(mesh, norm);
-  if (!this->Choice.SetProperty(property))
+  this->ChoiceMade = true;
+  this->AutomaticMode = choice.Mode;
+  this->PredictedError = choice.PredictedError;
+  if (choice.Table)
   {
-    return;
+    this->Table = choice.Table;
   }
-  for (int mode : { vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D,
-         vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D })
+  for (size_t i = 0; i < choice.PredictedErrors.size(); ++i)
   {
-    this->ConfigureTable(frame, mode);
-    if (!this->Table->Update(property, this->TransferFunction, frame.ScalarRange))
-    {
-      return;
-    }
-    const double error = this->Choice.PredictError(this->Table);
-    vtkDebugWithObjectMacro(frame.Mapper,
-      << "Automatic integration: " << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(mode)
-      << " predicted " << error << "/255 (worst segment " << this->Choice.GetWorstSegmentError()
-      << ")");
-    if (error <= frame.Mapper->GetMaximumError())
-    {
-      this->AutomaticMode = mode;
-      this->PredictedError = error;
-      return;
-    }
+    vtkDebugWithObjectMacro(self, << "Automatic integration: "
+                                  << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(i == 0
+                                         ? vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
+                                         : vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D)
+                                  << " predicted " << choice.PredictedErrors[i] << "/255");
   }
 }

@@ -26,11 +26,12 @@
 #ifndef vtkTiledRayCastIntegration_h
 #define vtkTiledRayCastIntegration_h
 
-#include "vtkNew.h"                             // For vtkNew
-#include "vtkTiledRayCastIntegrationChoice.h"   // For vtkTiledRayCastIntegrationChoice
-#include "vtkTiledRayCastIntegrationTextures.h" // For vtkTiledRayCastIntegrationTextures
-#include "vtkTiledRayCastVolumeMapper.h"        // For the integration modes
-#include "vtkType.h"                            // For vtkIdType
+#include "vtkNew.h"                              // For vtkNew
+#include "vtkSmartPointer.h"                     // For vtkSmartPointer
+#include "vtkTiledRayCastAutomaticIntegration.h" // For vtkTiledRayCastAutomaticIntegration
+#include "vtkTiledRayCastIntegrationTextures.h"  // For vtkTiledRayCastIntegrationTextures
+#include "vtkTiledRayCastVolumeMapper.h"         // For the integration modes
+#include "vtkType.h"                             // For vtkIdType
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -63,6 +64,9 @@ public:
     double ObjectToWorldNorm = 1;
     int MaxTextureSize = 0;
     int Max3DTextureSize = 0;
+    // Whether a choice of the automatic mode in progress is waited for (SynchronousStatistics);
+    // the first choice always is.
+    bool WaitForChoice = false;
   };
 
   /**
@@ -99,16 +103,19 @@ private:
   vtkTiledRayCastIntegration(const vtkTiledRayCastIntegration&) = delete;
   void operator=(const vtkTiledRayCastIntegration&) = delete;
 
-  // The automatic mode's choice, made again when the transfer function, the mesh, the lengths
-  // or the budget changed.
+  // The automatic mode's choice, made again (on a worker thread) when the transfer function,
+  // the mesh, the lengths or the budget changed; partial pre-integration until it is made.
   void ChooseIntegration(const Frame& frame, vtkVolumeProperty* property);
   // The table of a table mode, at the resolution and lengths it needs (not yet updated).
   void ConfigureTable(const Frame& frame, int mode);
 
   vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
-  vtkNew<vtkTiledRayCastPreIntegrationTable> Table;
+  // The table of a table mode: built here for an explicit mode, by the choice for the automatic
+  // mode (then exactly the one its prediction read).
+  vtkSmartPointer<vtkTiledRayCastPreIntegrationTable> Table;
   vtkTiledRayCastIntegrationTextures Textures;
-  vtkTiledRayCastIntegrationChoice Choice;
+  vtkTiledRayCastAutomaticIntegration Automatic;
+  bool ChoiceMade = false; // since this object exists
   int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
   double PredictedError = 0.0;
   std::vector<double> ChoiceKey;

@@ -70,15 +70,20 @@ bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* wind
   vtkTiledRayCastPreIntegrationTable* table, int mode, vtkObject* reporter, vtkIdType& uploaded,
   std::string& error)
 {
-  if (table->GetMTime() <= this->UploadedTableTime && mode == this->UploadedTableMode)
+  if (table == this->UploadedTable && table->GetMTime() <= this->UploadedTableTime &&
+    mode == this->UploadedTableMode)
   {
     return true;
   }
   int size[3];
   table->GetSize(size);
-  if (table->GetReducedFromScalarSize() > 0)
+  vtkTiledRayCastVolumeMapper* mapper = vtkTiledRayCastVolumeMapper::SafeDownCast(reporter);
+  const bool automatic =
+    mapper && mapper->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION;
+  if (table->GetReducedFromScalarSize() > 0 && !automatic)
   {
-    // Once per build that had to give up resolution.
+    // Once per build that had to give up resolution (the automatic mode took this table for its
+    // predicted error, coarse or not: normal service).
     vtkObject* self = reporter;
     vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
                                     << "D pre-integration table of this transfer function "
@@ -86,8 +91,9 @@ bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* wind
                                     << table->GetBuildTimeBudget() << " s to build at "
                                     << table->GetReducedFromScalarSize()
                                     << " scalar steps: it was built at " << size[0]
-                                    << ", coarser. Partial pre-integration (the default "
-                                       "integration mode) needs no table and is exact for it.");
+                                    << ", coarser. Partial pre-integration needs no table and is "
+                                       "exact for it; the automatic mode (the default) takes a "
+                                       "table only where its error fits the budget.");
   }
   vtkTextureObject* tex = this->TableTexture;
   tex->ReleaseGraphicsResources(window);
@@ -110,6 +116,7 @@ bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* wind
     return false;
   }
   this->UploadedTableTime = table->GetMTime();
+  this->UploadedTable = table;
   this->UploadedTableMode = mode;
   uploaded += table->GetNumberOfBytes();
   return true;
@@ -187,5 +194,6 @@ void vtkTiledRayCastIntegrationTextures::ReleaseGraphicsResources(vtkWindow* win
   this->TableTexture->ReleaseGraphicsResources(window);
   this->UploadedNodesTime = 0;
   this->UploadedTableTime = 0;
+  this->UploadedTable = nullptr;
   this->UploadedTableMode = -1;
 }

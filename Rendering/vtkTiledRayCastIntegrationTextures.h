@@ -87,6 +87,8 @@ private:
   vtkNew<vtkTextureObject> TableTexture;
   vtkMTimeType UploadedNodesTime = 0;
   vtkMTimeType UploadedTableTime = 0;
+  // The table object uploaded: the automatic mode hands over tables built on another thread.
+  const void* UploadedTable = nullptr;
   int UploadedTableMode = -1;
 };
 

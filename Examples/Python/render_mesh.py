@@ -58,6 +58,7 @@ MODES = {
     "partial": vtkTiledRayCastVolumeMapper.PARTIAL_PRE_INTEGRATION,
     "3d": vtkTiledRayCastVolumeMapper.PRE_INTEGRATION_3D,
     "2d": vtkTiledRayCastVolumeMapper.PRE_INTEGRATION_2D,
+    "automatic": vtkTiledRayCastVolumeMapper.AUTOMATIC_INTEGRATION,
 }
 LAYOUTS = {
     "compact": vtkTiledRayCastVolumeMapper.COMPACT_LAYOUT,
@@ -400,8 +401,9 @@ def parse_arguments(argv):
                         help="look for --array only in the point or only in the cell data")
     parser.add_argument("--time-step", type=integer_in(0, 2 ** 31 - 1, "--time-step"),
                         default=None, help="Exodus files: the time step to render (0-based)")
-    parser.add_argument("--mode", choices=sorted(MODES), default="partial",
-                        help="integration: partial pre-integration, 3D or 2D table")
+    parser.add_argument("--mode", choices=sorted(MODES), default="automatic",
+                        help="integration: the cheapest within 1/255 of exact (the mapper's "
+                             "default), partial pre-integration (exact), 3D or 2D table")
     parser.add_argument("--layout", choices=sorted(LAYOUTS), default="compact")
     parser.add_argument("--pipeline", choices=["automatic", "compute", "fragment"],
                         default="automatic",

@@ -14,13 +14,17 @@
 // and a 2 %-wide opacity band, where both tables are 4/255 off at grazing rays, take partial
 // pre-integration; a budget of 255 takes the 2D table anywhere; a new transfer function is
 // decided again; a blend mode other than compositing uses partial pre-integration's nodes as
-// always. Every image is checked against the exact reference with the default bounds.
+// always. Without SynchronousStatistics a new transfer function is drawn at once with partial
+// pre-integration while the choice is made on a worker thread, and with its table once made;
+// edits in quick succession abandon the choices they overtake. Every image is checked against
+// the exact reference with the default bounds.
 #include "TiledRayCastTestScene.h"
 
 #include "vtkPiecewiseFunction.h"
 #include "vtkTesting.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTimerLog.h"
+#include "vtksys/SystemTools.hxx"
 
 #include <string>
 
@@ -96,6 +100,58 @@ int TestTiledRayCastAutomatic(int argc, char* argv[])
            "maximum intensity: partial pre-integration's nodes") &&
       ok;
     ok = Expect(scene.Warnings->Count == 0, "no warning") && ok;
+  }
+  {
+    // The default mode is the automatic one; its choice runs on a worker thread.
+    trctest::WatchedVolume scene(fin, trctest::MakePropertyFor(fin, 0.05), 160);
+    View(scene);
+    scene.Window->Render(); // the first choice is waited for
+    vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
+    ok = Expect(stats->GetIntegrationMode() == M::PRE_INTEGRATION_2D,
+           "default mode: the first frame waits for the choice (2D table)") &&
+      ok;
+    // Edits in quick succession: each frame draws at once, with partial pre-integration unless
+    // the choice of its edit was already made (a worker thread on a loaded machine can finish
+    // before the frame asks for it).
+    double range[2];
+    fin->GetPointData()->GetScalars()->GetRange(range);
+    vtkPiecewiseFunction* opacity = scene.Volume->GetProperty()->GetScalarOpacity();
+    for (int edit = 0; edit < 4; ++edit)
+    {
+      opacity->AddPoint(range[0] + (0.2 + 0.1 * edit) * (range[1] - range[0]), 0.1 + 0.05 * edit);
+      scene.Window->Render();
+      std::cout << "edit " << edit << ": "
+                << M::GetIntegrationModeAsString(stats->GetIntegrationMode()) << "\n";
+    }
+    ok = trctest::CheckAgainstReference(
+           scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "after the edits") &&
+      ok;
+    // The last edit's choice arrives in a later frame.
+    vtkNew<vtkTimerLog> timer;
+    timer->StartTimer();
+    while (stats->GetIntegrationMode() == M::PARTIAL_PRE_INTEGRATION)
+    {
+      timer->StopTimer();
+      if (timer->GetElapsedTime() > 60)
+      {
+        break;
+      }
+      vtksys::SystemTools::Delay(20);
+      scene.Window->Render();
+    }
+    timer->StopTimer();
+    std::cout << "choice waited for " << timer->GetElapsedTime() << " s after the checks\n";
+    ok = Expect(
+           stats->GetIntegrationMode() == M::PRE_INTEGRATION_2D, "the choice made: the 2D table") &&
+      ok;
+    ok = Expect(stats->GetPredictedError() > 0 &&
+             stats->GetPredictedError() <= scene.Mapper->GetMaximumError(),
+           "the choice made: its prediction fits the budget") &&
+      ok;
+    ok = trctest::CheckAgainstReference(
+           scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "choice made") &&
+      ok;
+    ok = Expect(scene.Warnings->Count == 0, "asynchronous choice: no warning") && ok;
   }
   {
     trctest::WatchedVolume scene(box, trctest::MakePropertyFor(box, 0.05), 160);
