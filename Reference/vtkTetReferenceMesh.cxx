@@ -275,6 +275,11 @@ bool vtkTetReferenceMesh::TransformPoints(
 
 //------------------------------------------------------------------------------
 // Positive orientation (docs/design.md); zero-volume tetrahedra hold nothing and are dropped.
+namespace
+{
+const double FlatTolerance = 1e-12;
+}
+
 void vtkTetReferenceMesh::OrientTetrahedra(vtkStaging& staging, vtkIdType& degenerate)
 {
   const vtkIdType numPoints = staging.NumberOfPoints;
@@ -312,7 +317,21 @@ void vtkTetReferenceMesh::OrientTetrahedra(vtkStaging& staging, vtkIdType& degen
     }
     const double det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
       u[2] * (v[0] * w[1] - v[1] * w[0]);
-    if (!(det != 0.0) || !std::isfinite(det))
+    // Flat within rounding: 6|V| <= 1e-12 L^3, L the longest edge (the rule of the mesh
+    // builder's DegeneracyTolerance). The sign of such a volume is noise: kept with it, a flat
+    // tetrahedron could be taken for one overlapping its neighbour and a real tetrahedron left
+    // out in its place (torus_vistrails' flat boundary tetrahedra did so: up to 111/255 off).
+    double longest = 0.0;
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = i + 1; j < 4; ++j)
+      {
+        const double e[3] = { p[j][0] - p[i][0], p[j][1] - p[i][1], p[j][2] - p[i][2] };
+        longest = std::max(longest, e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+      }
+    }
+    longest = std::sqrt(longest);
+    if (!(std::fabs(det) > FlatTolerance * longest * longest * longest) || !std::isfinite(det))
     {
       ++degenerate;
       continue;
