@@ -44,6 +44,35 @@ def make_property(lo, hi, unit):
     return prop
 
 
+def unit_tetrahedron():
+    """The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), of constant scalar 0.5."""
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
+        points.InsertNextPoint(p)
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+    scalars = vtkDoubleArray()
+    for _ in range(4):
+        scalars.InsertNextValue(0.5)
+    grid.GetPointData().SetScalars(scalars)
+    return grid
+
+
+def camera_down_z():
+    """Looking down -z at the unit square with a parallel projection: through the unit
+    tetrahedron, the chord at (x, y) is 1 - x - y."""
+    camera = vtkCamera()
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(0.5)
+    camera.SetFocalPoint(0.5, 0.5, 0.0)
+    camera.SetPosition(0.5, 0.5, 5.0)
+    camera.SetViewUp(0, 1, 0)
+    camera.SetClippingRange(1.0, 10.0)
+    return camera
+
+
 class TestReferenceRendererPython(unittest.TestCase):
     def test_dataset(self):
         reader = vtkXMLUnstructuredGridReader()
@@ -91,25 +120,9 @@ class TestReferenceRendererPython(unittest.TestCase):
         self.assertLessEqual(stats[2], 0.5 + 1e-3)  # rounding to 8 bits only
 
     def test_single_tetrahedron(self):
-        points = vtkPoints()
-        points.SetDataTypeToDouble()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
-            points.InsertNextPoint(p)
-        grid = vtkUnstructuredGrid()
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-        scalars = vtkDoubleArray()
-        for _ in range(4):
-            scalars.InsertNextValue(0.5)
-        grid.GetPointData().SetScalars(scalars)
+        grid = unit_tetrahedron()
         # Looking down -z with a parallel projection: the chord at (x, y) is 1 - x - y.
-        camera = vtkCamera()
-        camera.ParallelProjectionOn()
-        camera.SetParallelScale(0.5)
-        camera.SetFocalPoint(0.5, 0.5, 0.0)
-        camera.SetPosition(0.5, 0.5, 5.0)
-        camera.SetViewUp(0, 1, 0)
-        camera.SetClippingRange(1.0, 10.0)
+        camera = camera_down_z()
         tau = 1.7
         prop = make_property(0.0, 1.0, 1.0)
         opacity = vtkPiecewiseFunction()
@@ -149,24 +162,8 @@ class TestReferenceRendererPython(unittest.TestCase):
 
     def test_scene(self):
         """Two overlapping tetrahedra (AddVolume) and a translucent layer in front of them."""
-        points = vtkPoints()
-        points.SetDataTypeToDouble()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
-            points.InsertNextPoint(p)
-        grid = vtkUnstructuredGrid()
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-        scalars = vtkDoubleArray()
-        for _ in range(4):
-            scalars.InsertNextValue(0.5)
-        grid.GetPointData().SetScalars(scalars)
-        camera = vtkCamera()
-        camera.ParallelProjectionOn()
-        camera.SetParallelScale(0.5)
-        camera.SetFocalPoint(0.5, 0.5, 0.0)
-        camera.SetPosition(0.5, 0.5, 5.0)
-        camera.SetViewUp(0, 1, 0)
-        camera.SetClippingRange(1.0, 10.0)
+        grid = unit_tetrahedron()
+        camera = camera_down_z()
 
         def prop(tau, rgb):
             color = vtkColorTransferFunction()
