@@ -244,18 +244,7 @@ int CheckScene(vtkImageData* image, vtkCamera* camera, int w, int h,
   return seen;
 }
 
-double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
-{
-  vtkDataArray* da = a->GetPointData()->GetArray("RGBA");
-  vtkDataArray* db = b->GetPointData()->GetArray("RGBA");
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < da->GetNumberOfValues(); ++i)
-  {
-    worst =
-      std::max(worst, std::fabs(da->GetComponent(i / 4, i % 4) - db->GetComponent(i / 4, i % 4)));
-  }
-  return worst;
-}
+using trc::MaxAbsDifference;
 
 const double Up[3] = { 0, 0, 1 };
 auto Flat = [](double, double, double) { return 0.5; };

@@ -64,6 +64,20 @@ inline vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* 
   return renderer->Render() ? renderer->GetOutput() : nullptr;
 }
 
+// The largest difference between two images' "RGBA" values.
+inline double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* da = a->GetPointData()->GetArray("RGBA");
+  vtkDataArray* db = b->GetPointData()->GetArray("RGBA");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < da->GetNumberOfValues(); ++i)
+  {
+    worst =
+      std::max(worst, std::fabs(da->GetComponent(i / 4, i % 4) - db->GetComponent(i / 4, i % 4)));
+  }
+  return worst;
+}
+
 // A grid of nx x ny x nz voxels of size h starting at origin, each split into tetrahedra.
 // Voxels for which skip(i, j, k) is true are left out (holes). The point scalars are
 // field(x, y, z) (array "Field"); the cell scalars are field at the tetrahedron's centroid
