@@ -53,11 +53,46 @@
 // crosses, exactly) and vtkTetReferenceCompositing (front-to-back compositing with
 // vtkTetRayIntegrator); for scenes of several volumes or with translucent layers,
 // vtkTetReferenceIntermixing (all media and fragments of a ray in depth order) instead of the
-// last (RenderScene(), in vtkTetReferenceRendererScene.cxx).
+// last (RenderScene()).
 namespace
 {
 using Hit = vtkTetReferenceRayCaster::Hit;
 using PixelRays = vtkTetReferencePixelRays;
+
+// The arrays of a rendered image: "RGBA" (4 components, double or float) and "NumberOfTets"
+// (the tetrahedra each ray crossed).
+struct OutputArrays
+{
+  OutputArrays(bool doublePrecision, vtkIdType numberOfPixels)
+  {
+    if (doublePrecision)
+    {
+      this->RGBA = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    else
+    {
+      this->RGBA = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    this->RGBA->SetName("RGBA");
+    this->RGBA->SetNumberOfComponents(4);
+    this->RGBA->SetNumberOfTuples(numberOfPixels);
+    this->Counts->SetName("NumberOfTets");
+    this->Counts->SetNumberOfTuples(numberOfPixels);
+  }
+  // The RGBA values as floats or as doubles (null for the other type).
+  float* Float() const
+  {
+    auto* a = vtkFloatArray::SafeDownCast(this->RGBA);
+    return a ? a->GetPointer(0) : nullptr;
+  }
+  double* Double() const
+  {
+    auto* a = vtkDoubleArray::SafeDownCast(this->RGBA);
+    return a ? a->GetPointer(0) : nullptr;
+  }
+  vtkSmartPointer<vtkDataArray> RGBA;
+  vtkNew<vtkIntArray> Counts;
+};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -267,34 +302,9 @@ int vtkTetReferenceRenderer::Render()
   const int width = this->ImageSize[0], height = this->ImageSize[1];
   const vtkIdType numPixels = static_cast<vtkIdType>(width) * height;
   PixelRays rays;
-  rays.Width = width;
-  rays.Height = height;
-  rays.OffsetX = this->SampleOffset[0];
-  rays.OffsetY = this->SampleOffset[1];
-  rays.Depth = depth;
-  rays.Center = in.Mesh.Center;
-  // Clip coordinates of the camera to world coordinates.
-  vtkMatrix4x4::DeepCopy(rays.Inverse,
-    this->Camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(width) / height, -1.0, 1.0));
-  vtkMatrix4x4::Invert(rays.Inverse, rays.Inverse);
-  rays.SetClippingPlanes(this->ClippingPlanes);
-
-  vtkSmartPointer<vtkDataArray> rgba;
-  if (this->DoublePrecisionOutput)
-  {
-    rgba = vtkSmartPointer<vtkDoubleArray>::New();
-  }
-  else
-  {
-    rgba = vtkSmartPointer<vtkFloatArray>::New();
-  }
-  rgba->SetName("RGBA");
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(numPixels);
-  vtkNew<vtkIntArray> counts;
-  counts->SetName("NumberOfTets");
-  counts->SetNumberOfTuples(numPixels);
+  rays.SetUp(
+    this->Camera, width, height, this->SampleOffset, depth, in.Mesh.Center, this->ClippingPlanes);
+  OutputArrays output(this->DoublePrecisionOutput != 0, numPixels);
   // The blend mode's settings: the data's scalar range normalises the scalar, as the mapper's.
   vtkTetReferenceBlending::Settings blending;
   blending.Mode = this->BlendMode;
@@ -314,12 +324,10 @@ int vtkTetReferenceRenderer::Render()
       }
     }
   }
-  in.CastRays(rays, this->Integrator, blending,
-    this->DoublePrecisionOutput ? nullptr : vtkFloatArray::SafeDownCast(rgba)->GetPointer(0),
-    this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr,
-    counts->GetPointer(0));
+  in.CastRays(rays, this->Integrator, blending, output.Float(), output.Double(),
+    output.Counts->GetPointer(0));
 
-  this->StoreOutput(rgba, counts);
+  this->StoreOutput(output.RGBA, output.Counts);
   timer->StopTimer();
   this->LastRayCastTime = timer->GetElapsedTime();
   return 1;
@@ -521,32 +529,13 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
 
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  PixelRays rays;
-  rays.Width = this->ImageSize[0];
-  rays.Height = this->ImageSize[1];
-  rays.OffsetX = this->SampleOffset[0];
-  rays.OffsetY = this->SampleOffset[1];
-  rays.Depth = depth;
-  vtkMatrix4x4::DeepCopy(rays.Inverse,
-    this->Camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(rays.Width) / rays.Height, -1.0, 1.0));
-  vtkMatrix4x4::Invert(rays.Inverse, rays.Inverse);
-  rays.SetClippingPlanes(this->ClippingPlanes); // world coordinates: Center is null
-
-  vtkNew<vtkFloatArray> rgbaFloat;
-  vtkNew<vtkDoubleArray> rgbaDouble;
-  vtkDataArray* rgba = this->DoublePrecisionOutput ? static_cast<vtkDataArray*>(rgbaDouble)
-                                                   : static_cast<vtkDataArray*>(rgbaFloat);
-  rgba->SetName("RGBA");
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(numPixels);
-  vtkNew<vtkIntArray> counts;
-  counts->SetName("NumberOfTets");
-  counts->SetNumberOfTuples(numPixels);
-  vtkTetReferenceScene::CastRays(scene, rays,
-    this->DoublePrecisionOutput ? nullptr : rgbaFloat->GetPointer(0),
-    this->DoublePrecisionOutput ? rgbaDouble->GetPointer(0) : nullptr, counts->GetPointer(0));
-  this->StoreOutput(rgba, counts);
+  PixelRays rays; // in world coordinates: no centre
+  rays.SetUp(this->Camera, this->ImageSize[0], this->ImageSize[1], this->SampleOffset, depth,
+    nullptr, this->ClippingPlanes);
+  OutputArrays output(this->DoublePrecisionOutput != 0, numPixels);
+  vtkTetReferenceScene::CastRays(
+    scene, rays, output.Float(), output.Double(), output.Counts->GetPointer(0));
+  this->StoreOutput(output.RGBA, output.Counts);
   timer->StopTimer();
   this->LastRayCastTime = timer->GetElapsedTime();
   return 1;
