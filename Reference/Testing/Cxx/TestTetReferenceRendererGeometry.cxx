@@ -163,30 +163,10 @@ int TestOpaqueDepth()
     vtkImageData* image = RenderImage(renderer, cube, constant, camera, w, h);
     TRC_CHECK(image);
     // The end of each ray: the window depth mapped back through the camera, here.
-    vtkNew<vtkMatrix4x4> inverse;
-    inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(double(w) / h, -1, 1));
-    inverse->Invert();
     auto tmax = [&](int i, int j)
     {
       const float z = depth->GetValue(i + w * j);
-      if (z >= 1.0f)
-      {
-        return 1.0;
-      }
-      double nearP[3], farP[3];
-      trc::PixelRay(camera, w, h, i, j, nearP, farP);
-      const double in[4] = { 2.0 * (i + 0.5) / w - 1.0, 2.0 * (j + 0.5) / h - 1.0, 2.0 * z - 1.0,
-        1.0 };
-      double out[4];
-      inverse->MultiplyPoint(in, out);
-      double num = 0.0, den = 0.0;
-      for (int k = 0; k < 3; ++k)
-      {
-        const double dk = farP[k] - nearP[k];
-        num += (out[k] / out[3] - nearP[k]) * dk;
-        den += dk * dk;
-      }
-      return num / den;
+      return z >= 1.0f ? 1.0 : trc::LambdaAtDepth(camera, w, h, i, j, z);
     };
     const trc::Box box = { { 0, 0, 0 }, { 4, 4, 4 }, 1.0 };
     TRC_CHECK(
