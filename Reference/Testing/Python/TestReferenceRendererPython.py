@@ -73,6 +73,15 @@ def camera_down_z():
     return camera
 
 
+def pixel_chords(n):
+    """(pixel index, chord through the unit tetrahedron) of every pixel of an n x n image seen
+    with camera_down_z()."""
+    for j in range(n):
+        for i in range(n):
+            x, y = (i + 0.5) / n, (j + 0.5) / n
+            yield i + n * j, max(0.0, 1.0 - x - y)
+
+
 class TestReferenceRendererPython(unittest.TestCase):
     def test_dataset(self):
         reader = vtkXMLUnstructuredGridReader()
@@ -137,12 +146,9 @@ class TestReferenceRendererPython(unittest.TestCase):
         renderer.DoublePrecisionOutputOn()
         self.assertEqual(renderer.Render(), 1)
         rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
-        for j in range(16):
-            for i in range(16):
-                x, y = (i + 0.5) / 16, (j + 0.5) / 16
-                chord = max(0.0, 1.0 - x - y)
-                alpha = rgba.GetComponent(i + 16 * j, 3)
-                self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
+        for pixel, chord in pixel_chords(16):
+            alpha = rgba.GetComponent(pixel, 3)
+            self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
 
     def test_integrator(self):
         prop = make_property(0.0, 1.0, 2.0)
@@ -197,14 +203,11 @@ class TestReferenceRendererPython(unittest.TestCase):
         renderer.AddTranslucentLayer(layer_rgba, layer_depth)
         self.assertEqual(renderer.Render(), 1)
         rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
-        for j in range(16):
-            for i in range(16):
-                x, y = (i + 0.5) / 16, (j + 0.5) / 16
-                chord = max(0.0, 1.0 - x - y)
-                a = -math.expm1(-1.5 * chord)
-                expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
-                for k in range(4):
-                    self.assertAlmostEqual(rgba.GetComponent(i + 16 * j, k), expected[k], delta=1e-12)
+        for pixel, chord in pixel_chords(16):
+            a = -math.expm1(-1.5 * chord)
+            expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
+            for k in range(4):
+                self.assertAlmostEqual(rgba.GetComponent(pixel, k), expected[k], delta=1e-12)
 
 
 if __name__ == "__main__":
