@@ -385,10 +385,10 @@ bool LoadGradientOpacity(Scene& s, int argc, char* argv[])
   return true;
 }
 
-// Every scene: which mesh, which view, which mapper settings, which bounds and checks.
-const std::map<std::string, SceneSetup>& Scenes()
+// Meshes: convexity, boundary layers, cracks, scalars, the paper's layout.
+void AddMeshScenes(std::map<std::string, SceneSetup>& scenes)
 {
-  static const std::map<std::string, SceneSetup> scenes = {
+  const std::map<std::string, SceneSetup> more = {
     { "convex",
       Seen("cube_sfepy_200k.vtu", 0.05, 30, 25,
         [](Scene& t)
@@ -464,6 +464,66 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
+    { "offset",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // Double scalars far from zero: spx's scalar spread over 1 unit around 1e6, where a
+        // float steps by 1/16. The layouts store scalars minus the middle of their range,
+        // subtracted in double (vtkTetMesh::GetScalarShift), and the transfer function's nodes
+        // likewise: 21/255 RMSE off the exact reference before, rounding now.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        vtkDataArray* original = s.Grid->GetPointData()->GetScalars();
+        double range[2];
+        original->GetRange(range);
+        vtkNew<vtkDoubleArray> offset;
+        offset->SetName("offset");
+        offset->SetNumberOfTuples(original->GetNumberOfTuples());
+        for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
+        {
+          offset->SetValue(
+            i, 1.0e6 + (original->GetComponent(i, 0) - range[0]) / (range[1] - range[0]));
+        }
+        vtkNew<vtkUnstructuredGrid> grid;
+        grid->ShallowCopy(s.Grid);
+        grid->GetPointData()->SetScalars(offset);
+        s.Grid = grid;
+        s.Mapper->SetInputData(s.Grid);
+        s.Volume->SetProperty(trctest::MakePropertyFor(s.Grid, 0.1));
+        s.View(20, 30);
+        return true;
+      } },
+    { "paper",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
+        // queries every 4 passes and 64-pixel tiles.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Mapper->SetPipelineToFragment();
+        s.Mapper->SetMeshLayoutToPaper();
+        s.Mapper->SetTetsPerPass(1);
+        s.Mapper->SetOcclusionQueryInterval(4);
+        s.Mapper->SetTileSize(64);
+        s.View(20, 30);
+        s.Check = [](Scene& t)
+        {
+          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+          return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
+            Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&
+            Expect(stats->GetMeshBytesPerTetrahedron() >= 144, "144 bytes per tet");
+        };
+        return true;
+      } },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Cameras inside the mesh, parallel projection, volume matrices (mirrors too), geometry
+// in the volume.
+void AddViewScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "geometry",
       [](Scene& s, int argc, char* argv[])
       {
@@ -549,35 +609,14 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Check = [](Scene& t) { return RaysEnteredWith(t, "Fragment"); };
         return true;
       } },
-    { "offset",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // Double scalars far from zero: spx's scalar spread over 1 unit around 1e6, where a
-        // float steps by 1/16. The layouts store scalars minus the middle of their range,
-        // subtracted in double (vtkTetMesh::GetScalarShift), and the transfer function's nodes
-        // likewise: 21/255 RMSE off the exact reference before, rounding now.
-        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
-          return false;
-        vtkDataArray* original = s.Grid->GetPointData()->GetScalars();
-        double range[2];
-        original->GetRange(range);
-        vtkNew<vtkDoubleArray> offset;
-        offset->SetName("offset");
-        offset->SetNumberOfTuples(original->GetNumberOfTuples());
-        for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
-        {
-          offset->SetValue(
-            i, 1.0e6 + (original->GetComponent(i, 0) - range[0]) / (range[1] - range[0]));
-        }
-        vtkNew<vtkUnstructuredGrid> grid;
-        grid->ShallowCopy(s.Grid);
-        grid->GetPointData()->SetScalars(offset);
-        s.Grid = grid;
-        s.Mapper->SetInputData(s.Grid);
-        s.Volume->SetProperty(trctest::MakePropertyFor(s.Grid, 0.1));
-        s.View(20, 30);
-        return true;
-      } },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Blend modes and clipping planes.
+void AddBlendAndClipScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "maximum",
       [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND); } },
@@ -592,6 +631,14 @@ const std::map<std::string, SceneSetup>& Scenes()
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::ADDITIVE_BLEND); } },
     { "clipped", LoadClipped },
     { "clipped_fragment", After(Fragment, LoadClipped) },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// The integration modes on optically thick and near-opaque media.
+void AddIntegrationScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "thick",
       [](Scene& s, int, char*[])
       { return LoadThick(s, vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION); } },
@@ -606,6 +653,14 @@ const std::map<std::string, SceneSetup>& Scenes()
     { "opaque_table3d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D, 1e-4) },
     { "opaque_table2d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, 1e-4) },
     { "table2d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, 0.1) },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Shading and gradient opacity.
+void AddShadingScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "shaded", LoadShaded },
     { "shaded_fragment",
       [](Scene& s, int argc, char* argv[])
@@ -671,29 +726,23 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
-    { "paper",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
-        // queries every 4 passes and 64-pixel tiles.
-        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
-          return false;
-        s.Mapper->SetPipelineToFragment();
-        s.Mapper->SetMeshLayoutToPaper();
-        s.Mapper->SetTetsPerPass(1);
-        s.Mapper->SetOcclusionQueryInterval(4);
-        s.Mapper->SetTileSize(64);
-        s.View(20, 30);
-        s.Check = [](Scene& t)
-        {
-          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
-          return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
-            Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&
-            Expect(stats->GetMeshBytesPerTetrahedron() >= 144, "144 bytes per tet");
-        };
-        return true;
-      } },
   };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Every scene: which mesh, which view, which mapper settings, which bounds and checks.
+const std::map<std::string, SceneSetup>& Scenes()
+{
+  static const std::map<std::string, SceneSetup> scenes = []
+  {
+    std::map<std::string, SceneSetup> all;
+    AddMeshScenes(all);
+    AddViewScenes(all);
+    AddBlendAndClipScenes(all);
+    AddIntegrationScenes(all);
+    AddShadingScenes(all);
+    return all;
+  }();
   return scenes;
 }
 }
