@@ -463,6 +463,205 @@ std::string Thousands(vtkIdType value)
   }
   return digits;
 }
+// Whether the options select `rung` (its family, its name, its size).
+bool Selected(const Options& options, const Rung& rung)
+{
+  const std::string family = rung.Family;
+  if (!options.Families.empty() &&
+    std::find(options.Families.begin(), options.Families.end(), family) == options.Families.end())
+  {
+    return false;
+  }
+  if (!options.Rungs.empty() &&
+    std::find(options.Rungs.begin(), options.Rungs.end(), rung.Name) == options.Rungs.end())
+  {
+    return false;
+  }
+  return options.MaxTets < 0 || rung.Tetrahedra <= options.MaxTets;
+}
+
+// The table of the selected rungs (--list).
+void ListRungs(const Options& options)
+{
+  std::cout << "| rung | family | parameter | points | tetrahedra |\n|---|---|---|---|---|\n";
+  for (const Rung& rung : Ladder)
+  {
+    if (!Selected(options, rung))
+    {
+      continue;
+    }
+    std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
+              << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
+  }
+}
+
+// The output directory, created where it does not exist; false (with a message) where it cannot
+// be or lies in the source tree.
+bool PrepareOutputDirectory(const std::string& directory)
+{
+  // Never write into the source tree (a build tree inside it, as ./build, is fine). Checked on
+  // the normalised path before creating anything, and on the real path (symbolic links) after.
+  auto inside = [](const std::string& path, const std::string& directory)
+  { return path == directory || path.rfind(directory + "/", 0) == 0; };
+  auto forbidden = [&](const std::string& path, bool real)
+  {
+    auto normal = [&](const std::string& p) {
+      return real ? vtksys::SystemTools::GetRealPath(p) : vtksys::SystemTools::CollapseFullPath(p);
+    };
+    const std::string sources = normal(TRC_SOURCE_DIR);
+    if (inside(normal(path), sources) && !inside(normal(path), normal(TRC_BINARY_DIR)))
+    {
+      std::cerr << "error: " << normal(path) << " is inside the source tree " << sources
+                << "; write the ladder elsewhere\n";
+      return true;
+    }
+    return false;
+  };
+  if (forbidden(directory, false))
+  {
+    return false;
+  }
+  if (!vtksys::SystemTools::FileIsDirectory(directory) &&
+    !vtksys::SystemTools::MakeDirectory(directory))
+  {
+    std::cerr << "error: cannot create " << directory << "\n";
+    return false;
+  }
+  if (forbidden(directory, true))
+  {
+    return false;
+  }
+  return true;
+}
+
+// An existing rung read back and checked (--verify-existing); true when it passes.
+bool VerifyExistingRung(const Options& options, const Rung& rung)
+{
+  const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+  const double start = vtkTimerLog::GetUniversalTime();
+  bool ok = Verify(fileName, rung);
+  for (const auto& comparison : options.Comparisons)
+  {
+    ok = (comparison.first != rung.Name || Compare(fileName, comparison.second, rung)) && ok;
+  }
+  std::cout << rung.Name << ": " << (ok ? "verified" : "FAILED") << " ("
+            << vtkTimerLog::GetUniversalTime() - start << " s)" << std::endl;
+  return ok;
+}
+
+// Generates, orients, writes and checks `rung`: the number of its checks that failed, or -1
+// where it could not be generated or written (a message says why).
+int MakeRung(const Options& options, const Rung& rung)
+{
+  const std::string family = rung.Family;
+  int failures = 0;
+#ifndef TRC_HAVE_TETGEN
+  if (IsTetGenFamily(family))
+  {
+    std::cerr << "skipping " << rung.Name
+              << ": built without TiledRayCast::FiltersTetGen (TILEDRAYCAST_ENABLE_TETGEN)\n";
+    return 0;
+  }
+#endif
+  const double start = vtkTimerLog::GetUniversalTime();
+  vtkSmartPointer<vtkUnstructuredGrid> mesh;
+  std::string provenance;
+  if (family == "wavelet")
+  {
+    mesh = MakeWavelet(static_cast<int>(rung.Parameter), provenance);
+  }
+#ifdef TRC_HAVE_TETGEN
+  else
+  {
+    Surface surface;
+    std::string input;
+    bool read = false;
+    if (family == "torus")
+    {
+      input = "torus.off";
+      read = ReadOFF(options.Inputs + "/" + input, surface);
+    }
+    else if (family == "comb")
+    {
+      input = "comb.poly";
+      read = ReadPoly(options.Inputs + "/" + input, surface);
+    }
+    else
+    {
+      input = "lattice";
+      surface = MakeLattice(4);
+      read = surface.PolyData && surface.PolyData->GetNumberOfPolys() > 0;
+    }
+    if (!read)
+    {
+      std::cerr << "error: cannot read " << options.Inputs << "/" << input << "\n";
+      return -1;
+    }
+    std::string switches;
+    mesh = MakeTetGen(surface, rung.Parameter, switches);
+    std::ostringstream text;
+    text << "vtkTetGenMesher (TetGen 1.5 library) -" << switches << " on " << input
+         << "; scalar Synthetic = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z)";
+    provenance = text.str();
+  }
+#endif
+  if (!mesh)
+  {
+    std::cerr << "error: " << rung.Name << " could not be generated\n";
+    return -1;
+  }
+  vtkIdType swapped = 0, degenerate = 0;
+  if (!OrientMesh(mesh, swapped, degenerate))
+  {
+    std::cerr << "error: " << rung.Name << " holds cells other than tetrahedra\n";
+    return -1;
+  }
+  AddProvenance(mesh, std::string("MakeDatasetLadder ") + rung.Name + ": " + provenance);
+  const double generated = vtkTimerLog::GetUniversalTime();
+
+  const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+  if (!Write(mesh, fileName, options.Compressor))
+  {
+    std::cerr << "error: cannot write " << fileName << "\n";
+    return -1;
+  }
+  const double written = vtkTimerLog::GetUniversalTime();
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  const vtkIdType tets = mesh->GetNumberOfCells();
+  mesh = nullptr;
+
+  char row[512];
+  std::snprintf(row, sizeof(row), "| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.0f |", rung.Name,
+    family == "wavelet" ? "yes" : "no", Thousands(points).c_str(), Thousands(tets).c_str(),
+    generated - start, written - generated,
+    static_cast<double>(vtksys::SystemTools::FileLength(fileName)) / (1024.0 * 1024.0),
+    PeakRSSMiB());
+  std::cout << row << std::endl;
+  if (swapped > 0 || degenerate > 0)
+  {
+    std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
+              << std::endl;
+  }
+  if (points != rung.Points || tets != rung.Tetrahedra)
+  {
+    std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
+              << " tetrahedra\n";
+    ++failures;
+  }
+  if (options.Verify && !Verify(fileName, rung))
+  {
+    ++failures;
+  }
+  for (const auto& comparison : options.Comparisons)
+  {
+    if (comparison.first == rung.Name && !Compare(fileName, comparison.second, rung))
+    {
+      ++failures;
+    }
+  }
+  return failures;
+}
+
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -482,66 +681,12 @@ int main(int argc, char* argv[])
     Usage(std::cerr);
     return EXIT_FAILURE;
   }
-  auto selected = [&](const Rung& rung)
-  {
-    const std::string family = rung.Family;
-    if (!options.Families.empty() &&
-      std::find(options.Families.begin(), options.Families.end(), family) == options.Families.end())
-    {
-      return false;
-    }
-    if (!options.Rungs.empty() &&
-      std::find(options.Rungs.begin(), options.Rungs.end(), rung.Name) == options.Rungs.end())
-    {
-      return false;
-    }
-    return options.MaxTets < 0 || rung.Tetrahedra <= options.MaxTets;
-  };
-
   if (options.List)
   {
-    std::cout << "| rung | family | parameter | points | tetrahedra |\n|---|---|---|---|---|\n";
-    for (const Rung& rung : Ladder)
-    {
-      if (!selected(rung))
-      {
-        continue;
-      }
-      std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
-                << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
-    }
+    ListRungs(options);
     return EXIT_SUCCESS;
   }
-
-  // Never write into the source tree (a build tree inside it, as ./build, is fine). Checked on
-  // the normalised path before creating anything, and on the real path (symbolic links) after.
-  auto inside = [](const std::string& path, const std::string& directory)
-  { return path == directory || path.rfind(directory + "/", 0) == 0; };
-  auto forbidden = [&](const std::string& path, bool real)
-  {
-    auto normal = [&](const std::string& p) {
-      return real ? vtksys::SystemTools::GetRealPath(p) : vtksys::SystemTools::CollapseFullPath(p);
-    };
-    const std::string sources = normal(TRC_SOURCE_DIR);
-    if (inside(normal(path), sources) && !inside(normal(path), normal(TRC_BINARY_DIR)))
-    {
-      std::cerr << "error: " << normal(path) << " is inside the source tree " << sources
-                << "; write the ladder elsewhere\n";
-      return true;
-    }
-    return false;
-  };
-  if (forbidden(options.OutputDirectory, false))
-  {
-    return EXIT_FAILURE;
-  }
-  if (!vtksys::SystemTools::FileIsDirectory(options.OutputDirectory) &&
-    !vtksys::SystemTools::MakeDirectory(options.OutputDirectory))
-  {
-    std::cerr << "error: cannot create " << options.OutputDirectory << "\n";
-    return EXIT_FAILURE;
-  }
-  if (forbidden(options.OutputDirectory, true))
+  if (!PrepareOutputDirectory(options.OutputDirectory))
   {
     return EXIT_FAILURE;
   }
@@ -554,129 +699,21 @@ int main(int argc, char* argv[])
   int failures = 0;
   for (const Rung& rung : Ladder)
   {
-    if (!selected(rung))
+    if (!Selected(options, rung))
     {
       continue;
     }
-    const std::string family = rung.Family;
     if (options.VerifyExisting)
     {
-      const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
-      const double start = vtkTimerLog::GetUniversalTime();
-      bool ok = Verify(fileName, rung);
-      for (const auto& comparison : options.Comparisons)
-      {
-        ok = (comparison.first != rung.Name || Compare(fileName, comparison.second, rung)) && ok;
-      }
-      std::cout << rung.Name << ": " << (ok ? "verified" : "FAILED") << " ("
-                << vtkTimerLog::GetUniversalTime() - start << " s)" << std::endl;
-      failures += ok ? 0 : 1;
+      failures += VerifyExistingRung(options, rung) ? 0 : 1;
       continue;
     }
-#ifndef TRC_HAVE_TETGEN
-    if (IsTetGenFamily(family))
+    const int failed = MakeRung(options, rung);
+    if (failed < 0)
     {
-      std::cerr << "skipping " << rung.Name
-                << ": built without TiledRayCast::FiltersTetGen (TILEDRAYCAST_ENABLE_TETGEN)\n";
-      continue;
-    }
-#endif
-    const double start = vtkTimerLog::GetUniversalTime();
-    vtkSmartPointer<vtkUnstructuredGrid> mesh;
-    std::string provenance;
-    if (family == "wavelet")
-    {
-      mesh = MakeWavelet(static_cast<int>(rung.Parameter), provenance);
-    }
-#ifdef TRC_HAVE_TETGEN
-    else
-    {
-      Surface surface;
-      std::string input;
-      bool read = false;
-      if (family == "torus")
-      {
-        input = "torus.off";
-        read = ReadOFF(options.Inputs + "/" + input, surface);
-      }
-      else if (family == "comb")
-      {
-        input = "comb.poly";
-        read = ReadPoly(options.Inputs + "/" + input, surface);
-      }
-      else
-      {
-        input = "lattice";
-        surface = MakeLattice(4);
-        read = surface.PolyData && surface.PolyData->GetNumberOfPolys() > 0;
-      }
-      if (!read)
-      {
-        std::cerr << "error: cannot read " << options.Inputs << "/" << input << "\n";
-        return EXIT_FAILURE;
-      }
-      std::string switches;
-      mesh = MakeTetGen(surface, rung.Parameter, switches);
-      std::ostringstream text;
-      text << "vtkTetGenMesher (TetGen 1.5 library) -" << switches << " on " << input
-           << "; scalar Synthetic = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z)";
-      provenance = text.str();
-    }
-#endif
-    if (!mesh)
-    {
-      std::cerr << "error: " << rung.Name << " could not be generated\n";
       return EXIT_FAILURE;
     }
-    vtkIdType swapped = 0, degenerate = 0;
-    if (!OrientMesh(mesh, swapped, degenerate))
-    {
-      std::cerr << "error: " << rung.Name << " holds cells other than tetrahedra\n";
-      return EXIT_FAILURE;
-    }
-    AddProvenance(mesh, std::string("MakeDatasetLadder ") + rung.Name + ": " + provenance);
-    const double generated = vtkTimerLog::GetUniversalTime();
-
-    const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
-    if (!Write(mesh, fileName, options.Compressor))
-    {
-      std::cerr << "error: cannot write " << fileName << "\n";
-      return EXIT_FAILURE;
-    }
-    const double written = vtkTimerLog::GetUniversalTime();
-    const vtkIdType points = mesh->GetNumberOfPoints();
-    const vtkIdType tets = mesh->GetNumberOfCells();
-    mesh = nullptr;
-
-    char row[512];
-    std::snprintf(row, sizeof(row), "| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.0f |", rung.Name,
-      family == "wavelet" ? "yes" : "no", Thousands(points).c_str(), Thousands(tets).c_str(),
-      generated - start, written - generated,
-      static_cast<double>(vtksys::SystemTools::FileLength(fileName)) / (1024.0 * 1024.0),
-      PeakRSSMiB());
-    std::cout << row << std::endl;
-    if (swapped > 0 || degenerate > 0)
-    {
-      std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
-                << std::endl;
-    }
-    if (points != rung.Points || tets != rung.Tetrahedra)
-    {
-      std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
-                << " tetrahedra\n";
-      ++failures;
-    }
-    if (options.Verify && !Verify(fileName, rung))
-    {
-      ++failures;
-    }
-    for (const auto& comparison : options.Comparisons)
-    {
-      if (comparison.first == rung.Name && !Compare(fileName, comparison.second, rung))
-      {
-        ++failures;
-      }
-    }
+    failures += failed;
   }
   if (failures > 0)
   {
