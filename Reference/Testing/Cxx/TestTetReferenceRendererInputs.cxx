@@ -60,9 +60,6 @@ struct Fixture
 // Bad input: refused with an error, never a crash.
 int BadInput(Fixture& f)
 {
-  auto& constant = f.Constant;
-  auto& camera = f.Camera;
-  auto& cube = f.Cube;
   vtkNew<vtkTest::ErrorObserver> errors;
   auto expectFailure = [&errors](vtkTetReferenceRenderer* r, const char* what)
   {
@@ -87,8 +84,8 @@ int BadInput(Fixture& f)
   vtkNew<vtkTetReferenceRenderer> r;
   r->AddObserver(vtkCommand::ErrorEvent, errors);
   r->GetIntegrator()->AddObserver(vtkCommand::ErrorEvent, errors);
-  r->SetVolumeProperty(constant);
-  r->SetCamera(camera);
+  r->SetVolumeProperty(f.Constant);
+  r->SetCamera(f.Camera);
   r->SetImageSize(8, 8);
   TRC_CHECK(expectFailure(r, "no input"));
 
@@ -97,13 +94,13 @@ int BadInput(Fixture& f)
   TRC_CHECK(expectFailure(r, "empty grid"));
 
   vtkNew<vtkUnstructuredGrid> noScalars;
-  noScalars->DeepCopy(cube);
+  noScalars->DeepCopy(f.Cube);
   noScalars->GetPointData()->SetScalars(nullptr);
   noScalars->GetCellData()->RemoveArray("CellField");
   r->SetInputData(noScalars);
   TRC_CHECK(expectFailure(r, "no scalars"));
 
-  r->SetInputData(cube);
+  r->SetInputData(f.Cube);
   r->SetScalarModeToUsePointFieldData();
   r->SelectScalarArray("NoSuchArray");
   TRC_CHECK(expectFailure(r, "unknown array"));
@@ -111,11 +108,11 @@ int BadInput(Fixture& f)
 
   r->SetCamera(nullptr);
   TRC_CHECK(expectFailure(r, "no camera"));
-  r->SetCamera(camera);
+  r->SetCamera(f.Camera);
 
   r->SetVolumeProperty(nullptr);
   TRC_CHECK(expectFailure(r, "no property"));
-  r->SetVolumeProperty(constant);
+  r->SetVolumeProperty(f.Constant);
 
   r->SetImageSize(0, 8);
   TRC_CHECK(expectFailure(r, "image size 0"));
@@ -163,10 +160,10 @@ int BadInput(Fixture& f)
   ciedeColor->AddRGBPoint(1.0, 0, 0, 1);
   ciedeColor->SetColorSpaceToLabCIEDE2000();
   ciede->SetColor(ciedeColor);
-  r->SetInputData(cube);
+  r->SetInputData(f.Cube);
   r->SetVolumeProperty(ciede);
   TRC_CHECK(expectFailure(r, "CIEDE2000 colour space"));
-  r->SetVolumeProperty(constant);
+  r->SetVolumeProperty(f.Constant);
 
   // And it still works afterwards.
   errors->Clear();
@@ -177,19 +174,15 @@ int BadInput(Fixture& f)
 // NaN scalars: the tetrahedra touching the NaN point are transparent, still crossed.
 int NaNScalars(Fixture& f)
 {
-  auto& constant = f.Constant;
-  auto& camera = f.Camera;
-  auto& cube = f.Cube;
-  auto& reference = f.Reference;
   vtkNew<vtkUnstructuredGrid> holed;
-  holed->DeepCopy(cube);
+  holed->DeepCopy(f.Cube);
   vtkDataArray* s = holed->GetPointData()->GetScalars();
   // The point (1, 1, 2) (id 1 + 3 (1 + 3 * 2) = 22) on the top face.
   s->SetComponent(22, 0, std::numeric_limits<double>::quiet_NaN());
   vtkNew<vtkTetReferenceRenderer> r;
   r->SetInputData(holed);
-  r->SetVolumeProperty(constant);
-  r->SetCamera(camera);
+  r->SetVolumeProperty(f.Constant);
+  r->SetCamera(f.Camera);
   r->SetImageSize(24, 20);
   r->DoublePrecisionOutputOn();
   TRC_CHECK(r->Render());
@@ -201,9 +194,9 @@ int NaNScalars(Fixture& f)
     {
       double a[4], b[4];
       trc::Pixel(image, i, j, a);
-      trc::Pixel(reference, i, j, b);
+      trc::Pixel(f.Reference, i, j, b);
       TRC_CHECK(a[3] <= b[3] + 1e-15); // never more opaque
-      TRC_CHECK(trc::TetCount(image, i, j) == trc::TetCount(reference, i, j));
+      TRC_CHECK(trc::TetCount(image, i, j) == trc::TetCount(f.Reference, i, j));
       lessOpaque += b[3] - a[3];
       TRC_CHECK(std::isfinite(a[0]) && std::isfinite(a[3]));
     }
@@ -215,12 +208,8 @@ int NaNScalars(Fixture& f)
 // Degenerate tetrahedra (zero volume) are skipped and change nothing.
 int DegenerateTetrahedra(Fixture& f)
 {
-  auto& constant = f.Constant;
-  auto& camera = f.Camera;
-  auto& cube = f.Cube;
-  auto& reference = f.Reference;
   vtkNew<vtkUnstructuredGrid> withFlat;
-  withFlat->DeepCopy(cube);
+  withFlat->DeepCopy(f.Cube);
   // Four coplanar points of the grid (the plane z = 1) and a repeated point.
   const vtkIdType flatIds[4] = { 9, 10, 12, 13 };
   const vtkIdType repeated[4] = { 0, 1, 1, 4 };
@@ -231,27 +220,20 @@ int DegenerateTetrahedra(Fixture& f)
   cs->InsertNextTuple1(0.5);
   vtkNew<vtkTetReferenceRenderer> r;
   r->SetInputData(withFlat);
-  r->SetVolumeProperty(constant);
-  r->SetCamera(camera);
+  r->SetVolumeProperty(f.Constant);
+  r->SetCamera(f.Camera);
   r->SetImageSize(24, 20);
   r->DoublePrecisionOutputOn();
   TRC_CHECK(r->Render());
   TRC_CHECK(r->GetNumberOfDegenerateTetrahedra() == 2);
   TRC_CHECK(r->GetNumberOfTetrahedra() == 40);
-  TRC_CHECK(Difference(r->GetOutput(), reference) <= 1e-15);
+  TRC_CHECK(Difference(r->GetOutput(), f.Reference) <= 1e-15);
   return EXIT_SUCCESS;
 }
 
 // Other cells: hexahedra and image data voxels are split; triangles and lines ignored.
 int OtherCells(Fixture& f)
 {
-  auto& color = f.Color;
-  auto& tau = f.Tau;
-  auto& constant = f.Constant;
-  auto& camera = f.Camera;
-  auto& cubeBox = f.CubeBox;
-  auto& cube = f.Cube;
-  auto& reference = f.Reference;
   vtkNew<vtkUnstructuredGrid> hexes;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -290,14 +272,14 @@ int OtherCells(Fixture& f)
   hexes->GetPointData()->SetScalars(s);
   vtkNew<vtkTetReferenceRenderer> r;
   r->SetInputData(hexes);
-  r->SetVolumeProperty(constant);
-  r->SetCamera(camera);
+  r->SetVolumeProperty(f.Constant);
+  r->SetCamera(f.Camera);
   r->SetImageSize(24, 20);
   r->DoublePrecisionOutputOn();
   TRC_CHECK(r->Render());
   TRC_CHECK(r->GetNumberOfTetrahedra() >= 40);
-  TRC_CHECK(
-    trc::CheckBoxes(r->GetOutput(), camera, 24, 20, { cubeBox }, tau, color, "hexahedra") > 0);
+  TRC_CHECK(trc::CheckBoxes(
+              r->GetOutput(), f.Camera, 24, 20, { f.CubeBox }, f.Tau, f.Color, "hexahedra") > 0);
 
   vtkNew<vtkImageData> voxels;
   voxels->SetDimensions(3, 3, 3);
@@ -305,12 +287,12 @@ int OtherCells(Fixture& f)
   voxels->GetPointData()->SetScalars(s);
   r->SetInputData(voxels);
   TRC_CHECK(r->Render());
-  TRC_CHECK(trc::CheckBoxes(
-              r->GetOutput(), camera, 24, 20, { cubeBox }, tau, color, "image data (voxels)") > 0);
+  TRC_CHECK(trc::CheckBoxes(r->GetOutput(), f.Camera, 24, 20, { f.CubeBox }, f.Tau, f.Color,
+              "image data (voxels)") > 0);
 
   // Tetrahedra with a triangle and a line: the same image as the tetrahedra alone.
   vtkNew<vtkUnstructuredGrid> mixed;
-  mixed->DeepCopy(cube);
+  mixed->DeepCopy(f.Cube);
   mixed->InsertNextCell(VTK_LINE, 2, line);
   mixed->InsertNextCell(VTK_TRIANGLE, 3, tri);
   mixed->GetCellData()->GetArray("CellField")->InsertNextTuple1(0.5);
@@ -318,16 +300,13 @@ int OtherCells(Fixture& f)
   r->SetInputData(mixed);
   TRC_CHECK(r->Render());
   TRC_CHECK(r->GetNumberOfTetrahedra() == 40);
-  TRC_CHECK(Difference(r->GetOutput(), reference) <= 1e-15);
+  TRC_CHECK(Difference(r->GetOutput(), f.Reference) <= 1e-15);
   return EXIT_SUCCESS;
 }
 
 // Scalar selection: cell scalars by name, vector components and magnitude.
 int ScalarSelection(Fixture& f)
 {
-  auto& constant = f.Constant;
-  auto& origin = f.Origin;
-  auto& camera = f.Camera;
   auto ramp = vtkSmartPointer<vtkVolumeProperty>::New();
   vtkNew<vtkColorTransferFunction> c;
   c->AddRGBPoint(0.0, 0.0, 0.0, 1.0);
@@ -342,13 +321,13 @@ int ScalarSelection(Fixture& f)
   // written with point scalars; compare instead with a mesh whose points carry the same
   // constant everywhere: a constant cell field 1.25 equals a constant point field 1.25.
   auto constantField = [](double, double, double) { return 1.25; };
-  auto mesh = trc::MakeGrid(2, 2, 2, origin, 1.0, trc::Split::Six, constantField);
+  auto mesh = trc::MakeGrid(2, 2, 2, f.Origin, 1.0, trc::Split::Six, constantField);
   vtkNew<vtkTetReferenceRenderer> byPoints, byCells;
   for (vtkTetReferenceRenderer* r : { byPoints.Get(), byCells.Get() })
   {
     r->SetInputData(mesh);
     r->SetVolumeProperty(ramp);
-    r->SetCamera(camera);
+    r->SetCamera(f.Camera);
     r->SetImageSize(24, 20);
     r->DoublePrecisionOutputOn();
   }
@@ -359,7 +338,7 @@ int ScalarSelection(Fixture& f)
 
   // A varying cell field renders differently from its point counterpart but finitely.
   auto varying = [](double x, double y, double z) { return 0.2 + 0.5 * x + 0.2 * y + 0.1 * z; };
-  auto mesh2 = trc::MakeGrid(2, 2, 2, origin, 1.0, trc::Split::Six, varying);
+  auto mesh2 = trc::MakeGrid(2, 2, 2, f.Origin, 1.0, trc::Split::Six, varying);
   byCells->SetInputData(mesh2);
   byPoints->SetInputData(mesh2);
   TRC_CHECK(byPoints->Render() && byCells->Render());
@@ -384,7 +363,7 @@ int ScalarSelection(Fixture& f)
   vtkNew<vtkTetReferenceRenderer> byVector;
   byVector->SetInputData(mesh2);
   byVector->SetVolumeProperty(ramp);
-  byVector->SetCamera(camera);
+  byVector->SetCamera(f.Camera);
   byVector->SetImageSize(24, 20);
   byVector->DoublePrecisionOutputOn();
   byVector->SetScalarModeToUsePointFieldData();
@@ -407,17 +386,16 @@ int ScalarSelection(Fixture& f)
 // Output helpers.
 int OutputHelpers(Fixture& f)
 {
-  auto& reference = f.Reference;
   const double background[3] = { 0.2, 0.4, 0.6 };
   vtkNew<vtkImageData> rgb, rgb8;
-  vtkTetReferenceRenderer::CompositeOverBackground(reference, background, rgb);
-  vtkTetReferenceRenderer::ConvertToUnsignedChar(reference, background, rgb8);
+  vtkTetReferenceRenderer::CompositeOverBackground(f.Reference, background, rgb);
+  vtkTetReferenceRenderer::ConvertToUnsignedChar(f.Reference, background, rgb8);
   TRC_CHECK(rgb->GetNumberOfPoints() == 24 * 20 && rgb8->GetNumberOfPoints() == 24 * 20);
   TRC_CHECK(vtkUnsignedCharArray::SafeDownCast(rgb8->GetPointData()->GetScalars()));
   for (vtkIdType p = 0; p < 24 * 20; ++p)
   {
     double rgba[4], c[3], c8[3];
-    reference->GetPointData()->GetArray("RGBA")->GetTuple(p, rgba);
+    f.Reference->GetPointData()->GetArray("RGBA")->GetTuple(p, rgba);
     rgb->GetPointData()->GetScalars()->GetTuple(p, c);
     rgb8->GetPointData()->GetScalars()->GetTuple(p, c8);
     for (int k = 0; k < 3; ++k)
@@ -462,13 +440,11 @@ int OutputHelpers(Fixture& f)
 // Repeated renders (threads, cached mesh) are bitwise identical; the state prints.
 int RepeatedRenders(Fixture& f)
 {
-  auto& good = f.Good;
-  auto& reference = f.Reference;
-  TRC_CHECK(good->Render());
-  TRC_CHECK(good->GetLastPreparationTime() == 0.0); // cached
-  TRC_CHECK(Difference(good->GetOutput(), reference) == 0.0);
+  TRC_CHECK(f.Good->Render());
+  TRC_CHECK(f.Good->GetLastPreparationTime() == 0.0); // cached
+  TRC_CHECK(Difference(f.Good->GetOutput(), f.Reference) == 0.0);
   std::ostringstream printed;
-  good->Print(printed);
+  f.Good->Print(printed);
   TRC_CHECK(printed.str().find("NumberOfTetrahedra: 40") != std::string::npos);
   TRC_CHECK(printed.str().find("NumberOfNodes: 2") != std::string::npos); // the integrator
   return EXIT_SUCCESS;
