@@ -157,8 +157,7 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.FirstHitMs) << "," << Cell(r.PeelingMs) << "," << Cell(r.RayCastingMs) << ","
      << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
      << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
-     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance)
-     << "\n";
+     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << "\n";
 }
 
 double Median(std::vector<double> v)
@@ -419,11 +418,10 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   }
   return settings;
 }
-}
-
-int main(int argc, char* argv[])
+// The options of the header (Options' defaults where not given); false with a message on a bad
+// one or no mesh.
+bool ParseOptions(int argc, char* argv[], Options& o)
 {
-  Options o;
   for (int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -447,7 +445,7 @@ int main(int argc, char* argv[])
         o.Sweep != "pipelines")
       {
         std::cerr << "--sweep takes quick, full, defaults or pipelines\n";
-        return EXIT_FAILURE;
+        return false;
       }
     }
     else if (a == "--zsweep-max-tets")
@@ -470,7 +468,7 @@ int main(int argc, char* argv[])
       if (!IsMeshOrder(o.Order))
       {
         std::cerr << "--order takes input, morton, morton-cells, morton-points or shuffled\n";
-        return EXIT_FAILURE;
+        return false;
       }
     }
     else if (a == "--shade")
@@ -484,13 +482,13 @@ int main(int argc, char* argv[])
         o.TransferFunction != "spike")
       {
         std::cerr << "--tf takes ramp, band or spike\n";
-        return EXIT_FAILURE;
+        return false;
       }
     }
     else if (!a.empty() && a[0] == '-')
     {
       std::cerr << "unknown option " << a << "\n";
-      return EXIT_FAILURE;
+      return false;
     }
     else
       o.Meshes.push_back(a);
@@ -498,11 +496,195 @@ int main(int argc, char* argv[])
   if (o.Meshes.empty())
   {
     std::cerr << "usage: " << argv[0] << " [options] <mesh.vtu> ... (see the source's header)\n";
-    return EXIT_FAILURE;
+    return false;
   }
   if (o.Sizes.empty())
   {
     o.Sizes.push_back(512);
+  }
+  return true;
+}
+
+// The exact image of the first view of `grid` at `size` x `size` pixels, as 8-bit RGB.
+std::vector<unsigned char> ExactImage(vtkRenderer* renderer, vtkUnstructuredGrid* grid,
+  vtkVolumeProperty* property, const Options& o, int size, const std::string& scene)
+{
+  std::vector<unsigned char> reference;
+  SetView(renderer, grid, 0, o.Frames);
+  vtkNew<vtkTetReferenceRenderer> exact;
+  exact->SetInputData(grid);
+  exact->SetVolumeProperty(property);
+  exact->SetCamera(renderer->GetActiveCamera());
+  exact->SetImageSize(size, size);
+  exact->SetLights(renderer->GetLights()); // the headlight of the first Render()
+  exact->SetTwoSidedLighting(renderer->GetTwoSidedLighting());
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  exact->Render();
+  timer->StopTimer();
+  vtkNew<vtkImageData> image;
+  const double background[3] = { 0, 0, 0 };
+  vtkTetReferenceRenderer::ConvertToUnsignedChar(exact->GetOutput(), background, image);
+  auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
+  reference.assign(scalars->GetPointer(0), scalars->GetPointer(0) + 3 * size * size);
+  std::cerr << scene << " " << size << "^2: exact reference in " << timer->GetElapsedTime()
+            << " s\n";
+  return reference;
+}
+
+// Our mapper's columns of `row`: its statistics of the last frame and the medians of the timed
+// frames' phases, steps, times and sample distances.
+void FillOurColumns(vtkTiledRayCastStatistics* stats, const std::vector<double> phases[4],
+  const std::vector<double>& steps, const std::vector<double>& mapperGpu,
+  const std::vector<double>& mapperCpu, const std::vector<double>& distances, int size,
+  const std::string& label, Row& row)
+{
+  row.GpuBytesPerTet = double(stats->GetTotalGPUBytes()) / row.Tets;
+  row.Layers = stats->GetNumberOfLayers();
+  row.MedianPasses = stats->GetMedianPassesPerTile();
+  row.MaxPasses = stats->GetMaximumPassesPerTile();
+  row.Pipeline = stats->GetPipeline() ? stats->GetPipeline() : "";
+  row.FirstHitMs = Median(phases[0]);
+  row.PeelingMs = Median(phases[1]);
+  row.RayCastingMs = Median(phases[2]);
+  row.CompositingMs = Median(phases[3]);
+  row.MapperGpuMs = Median(mapperGpu);
+  row.MapperCpuMs = Median(mapperCpu);
+  row.SampleDistance = Median(distances);
+  row.Rays = static_cast<double>(stats->GetNumberOfRays());
+  if (row.Pipeline == "Compute") // the fragment pipeline counts no steps or entries
+  {
+    row.MeanSteps = Median(steps);
+    row.MaxSteps = static_cast<double>(stats->GetMaximumStepsPerRay());
+    row.Entries = static_cast<double>(stats->GetNumberOfEntries());
+  }
+  row.TargetBytesPerPixel = double(stats->GetRenderTargetBytes()) / (double(size) * size);
+  if (!stats->GetRendered())
+  {
+    std::cerr << label << ": nothing rendered\n";
+  }
+}
+
+// Times `setting` on the scene of `renderer` (its first frame, a warm-up, then the timed
+// frames along the camera path) into `row`, with its error against `reference` where there is one.
+void TimeSetting(const Setting& setting, vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkUnstructuredGrid* grid, vtkVolumeProperty* property, const Options& o, int size,
+  const std::vector<unsigned char>& reference, const std::string& scene, Row& row)
+{
+  double prepareMs = NAN;
+  vtkSmartPointer<vtkAbstractVolumeMapper> mapper = setting.Make(prepareMs);
+  row.ResampleMs = prepareMs;
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(property);
+  renderer->AddVolume(volume);
+
+  // First frame: everything the mapper prepares.
+  SetView(renderer, grid, 0, o.Frames);
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  window->Render();
+  window->WaitForCompletion();
+  timer->StopTimer();
+  row.FirstFrameMs = 1000.0 * timer->GetElapsedTime();
+
+  // Interacting: the rate for the warm-up (the sample distance settles) and timed frames.
+  window->SetDesiredUpdateRate(setting.Rate > 0 ? setting.Rate : 0.0001);
+  auto measureError = [&]()
+  {
+    window->Render();
+    const Error e = Compare(ReadPixels(window, size), reference);
+    row.Rmse = e.Rmse;
+    row.P999 = e.P999;
+    row.MaxErr = e.Max;
+    row.LostPixels = e.Lost;
+  };
+  if (!reference.empty() && setting.Rate <= 0)
+  {
+    measureError();
+  }
+
+  // Warm-up along the same path until half a second has passed: a GPU left idle while
+  // the CPU computed the reference lowers its clocks, and short frames would be timed
+  // before they rise again.
+  timer->StartTimer();
+  for (int f = 0; f < 1000; ++f)
+  {
+    SetView(renderer, grid, f, o.Frames);
+    window->Render();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    if (f >= 1 && timer->GetElapsedTime() > 0.5)
+    {
+      break;
+    }
+  }
+
+  std::vector<double> wall, gpu;
+  std::vector<double> phases[4], steps, mapperGpu, mapperCpu, distances;
+  auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
+  vtkOpenGLRenderTimer timerObject; // not a vtkObject
+  vtkOpenGLRenderTimer* gpuTimer = &timerObject;
+  for (int f = 0; f < o.Frames; ++f)
+  {
+    SetView(renderer, grid, f, o.Frames);
+    timer->StartTimer();
+    gpuTimer->Reset();
+    gpuTimer->Start();
+    window->Render();
+    gpuTimer->Stop();
+    window->WaitForCompletion();
+    timer->StopTimer();
+    wall.push_back(1000.0 * timer->GetElapsedTime());
+    if (gpuTimer->Ready())
+    {
+      gpu.push_back(gpuTimer->GetElapsedMilliseconds());
+    }
+    if (ours)
+    {
+      vtkTiledRayCastStatistics* stats = ours->GetStatistics();
+      phases[0].push_back(stats->GetFirstHitTime());
+      phases[1].push_back(stats->GetPeelingTime());
+      phases[2].push_back(stats->GetRayCastingTime());
+      phases[3].push_back(stats->GetCompositingTime());
+      steps.push_back(stats->GetMeanStepsPerRay());
+      mapperGpu.push_back(stats->GetTotalGPUTime());
+      mapperCpu.push_back(1000.0 * stats->GetRenderTime());
+      distances.push_back(stats->GetImageSampleDistance());
+    }
+  }
+  gpuTimer->ReleaseGraphicsResources();
+  if (!reference.empty() && setting.Rate > 0)
+  {
+    SetView(renderer, grid, 0, o.Frames); // the reference's view, at the interactive rate
+    measureError();
+  }
+  window->SetDesiredUpdateRate(0.0001);
+  row.MedianMs = Median(wall);
+  row.MinMs = *std::min_element(wall.begin(), wall.end());
+  row.GpuMedianMs = Median(gpu);
+  row.TetsPerS = row.Tets / (row.MedianMs / 1000.0);
+  if (ours)
+  {
+    FillOurColumns(ours->GetStatistics(), phases, steps, mapperGpu, mapperCpu, distances, size,
+      scene + " " + setting.Name, row);
+  }
+  else if (setting.Mapper == "resample_gpu")
+  {
+    const int r = atoi(setting.Name.c_str() + 3);
+    row.GpuBytesPerTet = (4.0 + 1.0) * r * r * r / row.Tets; // float scalars + mask
+  }
+  renderer->RemoveVolume(volume); // releases its graphics resources
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options o;
+  if (!ParseOptions(argc, argv, o))
+  {
+    return EXIT_FAILURE;
   }
 
   std::ofstream file;
@@ -551,31 +733,12 @@ int main(int argc, char* argv[])
       window->SetSize(size, size);
       window->AddRenderer(renderer);
       window->Render();
-      auto* glWindow = vtkOpenGLRenderWindow::SafeDownCast(window);
 
       // The exact image of the first view.
       std::vector<unsigned char> reference;
       if (o.Reference)
       {
-        SetView(renderer, grid, 0, o.Frames);
-        vtkNew<vtkTetReferenceRenderer> exact;
-        exact->SetInputData(grid);
-        exact->SetVolumeProperty(property);
-        exact->SetCamera(renderer->GetActiveCamera());
-        exact->SetImageSize(size, size);
-        exact->SetLights(renderer->GetLights()); // the headlight of the first Render()
-        exact->SetTwoSidedLighting(renderer->GetTwoSidedLighting());
-        vtkNew<vtkTimerLog> timer;
-        timer->StartTimer();
-        exact->Render();
-        timer->StopTimer();
-        vtkNew<vtkImageData> image;
-        const double background[3] = { 0, 0, 0 };
-        vtkTetReferenceRenderer::ConvertToUnsignedChar(exact->GetOutput(), background, image);
-        auto* scalars = vtkUnsignedCharArray::SafeDownCast(image->GetPointData()->GetScalars());
-        reference.assign(scalars->GetPointer(0), scalars->GetPointer(0) + 3 * size * size);
-        std::cerr << scene << " " << size << "^2: exact reference in " << timer->GetElapsedTime()
-                  << " s\n";
+        reference = ExactImage(renderer, grid, property, o, size, scene);
       }
 
       for (const Setting& setting : MakeSettings(grid, o, size))
@@ -589,141 +752,12 @@ int main(int argc, char* argv[])
         row.Setting = setting.Name;
         row.Frames = o.Frames;
 
-        double prepareMs = NAN;
-        vtkSmartPointer<vtkAbstractVolumeMapper> mapper = setting.Make(prepareMs);
-        row.ResampleMs = prepareMs;
-        vtkNew<vtkVolume> volume;
-        volume->SetMapper(mapper);
-        volume->SetProperty(property);
-        renderer->AddVolume(volume);
-
-        // First frame: everything the mapper prepares.
-        SetView(renderer, grid, 0, o.Frames);
-        vtkNew<vtkTimerLog> timer;
-        timer->StartTimer();
-        window->Render();
-        window->WaitForCompletion();
-        timer->StopTimer();
-        row.FirstFrameMs = 1000.0 * timer->GetElapsedTime();
-
-        // Interacting: the rate for the warm-up (the sample distance settles) and timed frames.
-        window->SetDesiredUpdateRate(setting.Rate > 0 ? setting.Rate : 0.0001);
-        auto measureError = [&]()
-        {
-          window->Render();
-          const Error e = Compare(ReadPixels(window, size), reference);
-          row.Rmse = e.Rmse;
-          row.P999 = e.P999;
-          row.MaxErr = e.Max;
-          row.LostPixels = e.Lost;
-        };
-        if (!reference.empty() && setting.Rate <= 0)
-        {
-          measureError();
-        }
-
-        // Warm-up along the same path until half a second has passed: a GPU left idle while
-        // the CPU computed the reference lowers its clocks, and short frames would be timed
-        // before they rise again.
-        timer->StartTimer();
-        for (int f = 0; f < 1000; ++f)
-        {
-          SetView(renderer, grid, f, o.Frames);
-          window->Render();
-          window->WaitForCompletion();
-          timer->StopTimer();
-          if (f >= 1 && timer->GetElapsedTime() > 0.5)
-          {
-            break;
-          }
-        }
-
-        std::vector<double> wall, gpu;
-        std::vector<double> phases[4], steps, mapperGpu, mapperCpu, distances;
-        auto* ours = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
-        vtkOpenGLRenderTimer timerObject; // not a vtkObject
-        vtkOpenGLRenderTimer* gpuTimer = &timerObject;
-        for (int f = 0; f < o.Frames; ++f)
-        {
-          SetView(renderer, grid, f, o.Frames);
-          timer->StartTimer();
-          gpuTimer->Reset();
-          gpuTimer->Start();
-          window->Render();
-          gpuTimer->Stop();
-          window->WaitForCompletion();
-          timer->StopTimer();
-          wall.push_back(1000.0 * timer->GetElapsedTime());
-          if (gpuTimer->Ready())
-          {
-            gpu.push_back(gpuTimer->GetElapsedMilliseconds());
-          }
-          if (ours)
-          {
-            vtkTiledRayCastStatistics* stats = ours->GetStatistics();
-            phases[0].push_back(stats->GetFirstHitTime());
-            phases[1].push_back(stats->GetPeelingTime());
-            phases[2].push_back(stats->GetRayCastingTime());
-            phases[3].push_back(stats->GetCompositingTime());
-            steps.push_back(stats->GetMeanStepsPerRay());
-            mapperGpu.push_back(stats->GetTotalGPUTime());
-            mapperCpu.push_back(1000.0 * stats->GetRenderTime());
-            distances.push_back(stats->GetImageSampleDistance());
-          }
-        }
-        gpuTimer->ReleaseGraphicsResources();
-        if (!reference.empty() && setting.Rate > 0)
-        {
-          SetView(renderer, grid, 0, o.Frames); // the reference's view, at the interactive rate
-          measureError();
-        }
-        window->SetDesiredUpdateRate(0.0001);
-        row.MedianMs = Median(wall);
-        row.MinMs = *std::min_element(wall.begin(), wall.end());
-        row.GpuMedianMs = Median(gpu);
-        row.TetsPerS = row.Tets / (row.MedianMs / 1000.0);
-
-        if (ours)
-        {
-          vtkTiledRayCastStatistics* stats = ours->GetStatistics();
-          row.GpuBytesPerTet = double(stats->GetTotalGPUBytes()) / row.Tets;
-          row.Layers = stats->GetNumberOfLayers();
-          row.MedianPasses = stats->GetMedianPassesPerTile();
-          row.MaxPasses = stats->GetMaximumPassesPerTile();
-          row.Pipeline = stats->GetPipeline() ? stats->GetPipeline() : "";
-          row.FirstHitMs = Median(phases[0]);
-          row.PeelingMs = Median(phases[1]);
-          row.RayCastingMs = Median(phases[2]);
-          row.CompositingMs = Median(phases[3]);
-          row.MapperGpuMs = Median(mapperGpu);
-          row.MapperCpuMs = Median(mapperCpu);
-          row.SampleDistance = Median(distances);
-          row.Rays = static_cast<double>(stats->GetNumberOfRays());
-          if (row.Pipeline == "Compute") // the fragment pipeline counts no steps or entries
-          {
-            row.MeanSteps = Median(steps);
-            row.MaxSteps = static_cast<double>(stats->GetMaximumStepsPerRay());
-            row.Entries = static_cast<double>(stats->GetNumberOfEntries());
-          }
-          row.TargetBytesPerPixel = double(stats->GetRenderTargetBytes()) / (double(size) * size);
-          if (!stats->GetRendered())
-          {
-            std::cerr << scene << " " << setting.Name << ": nothing rendered\n";
-          }
-        }
-        else if (setting.Mapper == "resample_gpu")
-        {
-          const int r = atoi(setting.Name.c_str() + 3);
-          row.GpuBytesPerTet = (4.0 + 1.0) * r * r * r / row.Tets; // float scalars + mask
-        }
+        TimeSetting(setting, window, renderer, grid, property, o, size, reference, scene, row);
         WriteRow(*out, row);
         out->flush();
         std::cerr << scene << " " << size << "^2 " << setting.Mapper << " [" << setting.Name
                   << "]: median " << row.MedianMs << " ms, first " << row.FirstFrameMs
                   << " ms, RMSE " << row.Rmse << "\n";
-
-        renderer->RemoveVolume(volume); // releases its graphics resources
-        (void)glWindow;
       }
     }
   }

@@ -48,6 +48,120 @@
 #include <string>
 #include <vector>
 
+namespace
+{
+// A dataset's scene: its property, and a VTK renderer holding its volume and camera.
+struct Scene
+{
+  vtkSmartPointer<vtkVolumeProperty> Property;
+  vtkSmartPointer<vtkRenderer> Renderer;
+};
+
+// The scene of TestTetReferenceRendererBunyk (TiledRayCastSharedScenes.h) for `grid`, its colour
+// interpolation `tf`, in a VTK renderer (its camera placement; rendered only with --bunyk).
+Scene MakeScene(vtkUnstructuredGrid* grid, const std::string& tf)
+{
+  double range[2], bounds[6];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  grid->GetBounds(bounds);
+  const double mid = tf == "sharpness" ? 0.3 : 0.5, sharp = tf == "sharpness" ? 0.5 : 0.0;
+  vtkSmartPointer<vtkVolumeProperty> property =
+    trcscene::MakeBunykProperty(range, trcscene::Diagonal(bounds), mid, sharp);
+  vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
+  if (tf == "hsv")
+  {
+    color->SetColorSpaceToHSV();
+  }
+  else if (tf == "lab")
+  {
+    color->SetColorSpaceToLab();
+  }
+  else if (tf == "diverging")
+  {
+    color->SetColorSpaceToDiverging();
+  }
+  vtkSmartPointer<vtkVolume> volume = trcscene::MakeBunykVolume(grid, property);
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->AddVolume(volume);
+  renderer->SetBackground(0, 0, 0);
+  renderer->ResetCamera(bounds);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->Azimuth(30.0);
+  camera->Elevation(20.0);
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(1.3);
+  renderer->ResetCameraClippingRange(bounds);
+  return { property, renderer };
+}
+
+// Renders `reference` `repeat` times and prints its line: tetrahedra, preparation, first and
+// best ray-casting times, tetrahedra per ray (mean over covered pixels, maximum), coverage.
+bool TimeReference(vtkTetReferenceRenderer* reference, int repeat, const std::string& file)
+{
+  double first = 0.0, best = 1e300, prepare = 0.0;
+  for (int r = 0; r < repeat; ++r)
+  {
+    if (!reference->Render())
+    {
+      fprintf(stderr, "render failed for %s\n", file.c_str());
+      return false;
+    }
+    const double t = reference->GetLastRayCastTime();
+    if (r == 0)
+    {
+      first = t;
+      prepare = reference->GetLastPreparationTime();
+    }
+    best = std::min(best, t);
+  }
+  vtkDataArray* counts = reference->GetOutput()->GetPointData()->GetArray("NumberOfTets");
+  double sum = 0.0, maxCount = 0.0, covered = 0.0;
+  for (vtkIdType p = 0; p < counts->GetNumberOfTuples(); ++p)
+  {
+    const double n = counts->GetComponent(p, 0);
+    sum += n;
+    maxCount = std::max(maxCount, n);
+    covered += n > 0 ? 1.0 : 0.0;
+  }
+  const double pixels = static_cast<double>(counts->GetNumberOfTuples());
+  printf("%-28s %9lld %9.3f %8.3f %8.3f %9.1f %8.0f %5.1f%%", file.c_str(),
+    static_cast<long long>(reference->GetNumberOfTetrahedra()), prepare, first, best,
+    covered > 0 ? sum / covered : 0.0, maxCount, 100.0 * covered / pixels);
+  return true;
+}
+
+// VTK's Bunyk ray caster in `renderer` against `reference` (which it leaves sampling pixel
+// corners): its time and the differences to the reference sampled at pixel centres and aligned
+// as VTK displays the Bunyk image.
+void CompareWithBunyk(vtkRenderer* renderer, vtkTetReferenceRenderer* reference, int size)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->AddRenderer(renderer);
+  window->SetSize(size, size);
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  window->Render();
+  timer->StopTimer();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  const double black[3] = { 0, 0, 0 };
+  vtkNew<vtkImageData> centres, aligned;
+  vtkTetReferenceRenderer::ConvertToUnsignedChar(reference->GetOutput(), black, centres);
+  double raw[3], stats[3];
+  vtkTetReferenceRenderer::CompareImages(centres, grab->GetOutput(), raw);
+  reference->SetSampleOffset(0.0, 0.0);
+  reference->Render();
+  vtkTetReferenceRenderer::EmulateRayCastImageDisplay(reference->GetOutput(), black, aligned);
+  vtkTetReferenceRenderer::CompareImages(aligned, grab->GetOutput(), stats);
+  printf(" | %8.3f %8.3f/%4.0f/%4.0f   %8.3f/%4.0f/%4.0f", timer->GetElapsedTime(), raw[0], raw[1],
+    raw[2], stats[0], stats[1], stats[2]);
+}
+} // namespace
+
 int main(int argc, char* argv[])
 {
   int size = 256, repeat = 3;
@@ -122,101 +236,19 @@ int main(int argc, char* argv[])
       fprintf(stderr, "cannot read %s\n", (dir + "/" + file).c_str());
       return 1;
     }
-    double range[2], bounds[6];
-    grid->GetPointData()->GetScalars()->GetRange(range);
-    grid->GetBounds(bounds);
-
-    // The scene of TestTetReferenceRendererBunyk (TiledRayCastSharedScenes.h), in a VTK renderer
-    // (its camera placement; rendered only with --bunyk).
-    const double mid = tf == "sharpness" ? 0.3 : 0.5, sharp = tf == "sharpness" ? 0.5 : 0.0;
-    vtkSmartPointer<vtkVolumeProperty> property =
-      trcscene::MakeBunykProperty(range, trcscene::Diagonal(bounds), mid, sharp);
-    vtkColorTransferFunction* color = property->GetRGBTransferFunction(0);
-    if (tf == "hsv")
-    {
-      color->SetColorSpaceToHSV();
-    }
-    else if (tf == "lab")
-    {
-      color->SetColorSpaceToLab();
-    }
-    else if (tf == "diverging")
-    {
-      color->SetColorSpaceToDiverging();
-    }
-    vtkSmartPointer<vtkVolume> volume = trcscene::MakeBunykVolume(grid, property);
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddVolume(volume);
-    renderer->SetBackground(0, 0, 0);
-    renderer->ResetCamera(bounds);
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->Azimuth(30.0);
-    camera->Elevation(20.0);
-    camera->OrthogonalizeViewUp();
-    camera->Zoom(1.3);
-    renderer->ResetCameraClippingRange(bounds);
-
+    const Scene scene = MakeScene(grid, tf);
     vtkNew<vtkTetReferenceRenderer> reference;
     reference->SetInputData(grid);
-    reference->SetVolumeProperty(property);
-    reference->SetCamera(camera);
+    reference->SetVolumeProperty(scene.Property);
+    reference->SetCamera(scene.Renderer->GetActiveCamera());
     reference->SetImageSize(size, size);
-    double first = 0.0, best = 1e300, prepare = 0.0;
-    for (int r = 0; r < repeat; ++r)
+    if (!TimeReference(reference, repeat, file))
     {
-      if (!reference->Render())
-      {
-        fprintf(stderr, "render failed for %s\n", file.c_str());
-        return 1;
-      }
-      const double t = reference->GetLastRayCastTime();
-      if (r == 0)
-      {
-        first = t;
-        prepare = reference->GetLastPreparationTime();
-      }
-      best = std::min(best, t);
+      return 1;
     }
-    vtkDataArray* counts = reference->GetOutput()->GetPointData()->GetArray("NumberOfTets");
-    double sum = 0.0, maxCount = 0.0, covered = 0.0;
-    for (vtkIdType p = 0; p < counts->GetNumberOfTuples(); ++p)
-    {
-      const double n = counts->GetComponent(p, 0);
-      sum += n;
-      maxCount = std::max(maxCount, n);
-      covered += n > 0 ? 1.0 : 0.0;
-    }
-    const double pixels = static_cast<double>(counts->GetNumberOfTuples());
-    printf("%-28s %9lld %9.3f %8.3f %8.3f %9.1f %8.0f %5.1f%%", file.c_str(),
-      static_cast<long long>(reference->GetNumberOfTetrahedra()), prepare, first, best,
-      covered > 0 ? sum / covered : 0.0, maxCount, 100.0 * covered / pixels);
-
     if (bunyk)
     {
-      vtkNew<vtkRenderWindow> window;
-      window->SetOffScreenRendering(1);
-      window->AddRenderer(renderer);
-      window->SetSize(size, size);
-      vtkNew<vtkTimerLog> timer;
-      timer->StartTimer();
-      window->Render();
-      timer->StopTimer();
-      vtkNew<vtkWindowToImageFilter> grab;
-      grab->SetInput(window);
-      grab->ReadFrontBufferOff();
-      grab->SetInputBufferTypeToRGB();
-      grab->Update();
-      const double black[3] = { 0, 0, 0 };
-      vtkNew<vtkImageData> centres, aligned;
-      vtkTetReferenceRenderer::ConvertToUnsignedChar(reference->GetOutput(), black, centres);
-      double raw[3], stats[3];
-      vtkTetReferenceRenderer::CompareImages(centres, grab->GetOutput(), raw);
-      reference->SetSampleOffset(0.0, 0.0);
-      reference->Render();
-      vtkTetReferenceRenderer::EmulateRayCastImageDisplay(reference->GetOutput(), black, aligned);
-      vtkTetReferenceRenderer::CompareImages(aligned, grab->GetOutput(), stats);
-      printf(" | %8.3f %8.3f/%4.0f/%4.0f   %8.3f/%4.0f/%4.0f", timer->GetElapsedTime(), raw[0],
-        raw[1], raw[2], stats[0], stats[1], stats[2]);
+      CompareWithBunyk(scene.Renderer, reference, size);
     }
     printf("\n");
     fflush(stdout);

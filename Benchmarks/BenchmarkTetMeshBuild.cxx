@@ -112,7 +112,127 @@ std::map<std::string, double> EventTimes()
   }
   return total;
 }
+// The .vtu files of `directory`, sorted; false where it cannot be opened.
+bool ListMeshes(const std::string& directory, std::vector<std::string>& files)
+{
+  vtkNew<vtkDirectory> listing;
+  if (!listing->Open(directory.c_str()))
+  {
+    std::fprintf(stderr, "cannot open the directory %s\n", directory.c_str());
+    return false;
+  }
+  for (vtkIdType i = 0; i < listing->GetNumberOfFiles(); ++i)
+  {
+    const std::string name = listing->GetFile(i);
+    if (name.size() > 4 && name.substr(name.size() - 4) == ".vtu")
+    {
+      files.push_back(name);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return true;
 }
+
+// The median time of each phase of the full build (vtkTimerLog events), on one line.
+void PrintPhases(
+  vtkTetMeshBuilder* builder, vtkTetMeshCompactLayout* compact, vtkUnstructuredGrid* grid, int runs)
+{
+  std::map<std::string, std::vector<double>> perPhase;
+  vtkTimerLog::LoggingOn();
+  for (int r = 0; r < runs; ++r)
+  {
+    builder->Invalidate();
+    vtkTimerLog::ResetLog();
+    compact->Build(builder->Build(grid));
+    for (const auto& phase : EventTimes())
+    {
+      perPhase[phase.first].push_back(phase.second);
+    }
+  }
+  vtkTimerLog::LoggingOff();
+  std::printf("|  phases of the full build, ms: ");
+  for (const auto& phase : perPhase)
+  {
+    std::printf(" %s %.1f;", phase.first.c_str(), Median(phase.second));
+  }
+  std::printf(" |\n");
+}
+
+// The table's line of `grid` (double-precision points): cold and warm full builds, with each
+// layout and with spatial ordering, points-only updates, and the layouts' sizes; with `phases`,
+// the phases of the full build.
+void BenchmarkMesh(vtkUnstructuredGrid* grid, const std::string& file, int runs, bool phases)
+{
+  std::vector<double> original(3 * static_cast<size_t>(grid->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    grid->GetPoints()->GetPoint(i, original.data() + 3 * i);
+  }
+
+  // First build of a fresh builder and layout: memory not yet touched (page faults included).
+  std::vector<double> cold;
+  for (int r = 0; r < runs; ++r)
+  {
+    vtkNew<vtkTetMeshBuilder> builder;
+    vtkNew<vtkTetMeshCompactLayout> layout;
+    const double start = vtkTimerLog::GetUniversalTime();
+    layout->Build(builder->Build(grid));
+    cold.push_back(vtkTimerLog::GetUniversalTime() - start);
+  }
+  const double coldTime = Median(cold);
+
+  vtkNew<vtkTetMeshBuilder> builder;
+  vtkNew<vtkTetMeshCompactLayout> compact;
+  vtkNew<vtkTetMeshPaperLayout> paper;
+  vtkTetMesh* mesh = builder->Build(grid);
+  if (!mesh->GetReport()->GetUsable())
+  {
+    std::fprintf(stderr, "%s: %s\n", file.c_str(), mesh->GetReport()->GetErrorMessage());
+    return;
+  }
+  const double numTets = static_cast<double>(mesh->GetNumberOfTetrahedra());
+  compact->Build(mesh);
+  paper->Build(mesh);
+
+  auto invalidate = [&]() { builder->Invalidate(); };
+  double compactCpu = 0.0;
+  const double compactTime = Time(
+    runs, invalidate, [&]() { compact->Build(builder->Build(grid)); }, &compactCpu);
+  const double paperTime = Time(runs, invalidate, [&]() { paper->Build(builder->Build(grid)); });
+  builder->SpatialOrderingOn();
+  const double mortonTime = Time(runs, invalidate, [&]() { compact->Build(builder->Build(grid)); });
+  builder->SpatialOrderingOff();
+  compact->Build(builder->Build(grid));
+
+  int call = 0;
+  bool pointsPath = true;
+  const double pointsTime = Time(
+    runs, [&]() { Move(grid, original, ++call); },
+    [&]()
+    {
+      compact->Update(builder->Build(grid));
+      pointsPath = pointsPath && builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints;
+    });
+  if (!pointsPath)
+  {
+    std::fprintf(stderr, "%s: the points-only path was not taken\n", file.c_str());
+  }
+  paper->Build(mesh);
+
+  std::printf("| %s | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
+              "%.1f | %.1f | %.1f | %.2f | %.2f |\n",
+    file.c_str(), numTets, 1e3 * compactTime, numTets / compactTime / 1e6, 1e3 * compactCpu,
+    1e3 * paperTime, numTets / paperTime / 1e6, 1e3 * mortonTime, numTets / mortonTime / 1e6,
+    1e3 * pointsTime, numTets / pointsTime / 1e6, 1e3 * coldTime, numTets / coldTime / 1e6,
+    paper->GetBytesPerTet(), paper->GetBytesPerTetWithBoundary(), compact->GetBytesPerTet(),
+    compact->GetBytesPerTetWithBoundary());
+  if (phases)
+  {
+    PrintPhases(builder, compact, grid, runs);
+  }
+}
+
+} // namespace
 
 int main(int argc, char* argv[])
 {
@@ -156,21 +276,10 @@ int main(int argc, char* argv[])
   vtkSMPTools::Initialize(threads);
   if (files.empty())
   {
-    vtkNew<vtkDirectory> listing;
-    if (!listing->Open(directory.c_str()))
+    if (!ListMeshes(directory, files))
     {
-      std::fprintf(stderr, "cannot open the directory %s\n", directory.c_str());
       return EXIT_FAILURE;
     }
-    for (vtkIdType i = 0; i < listing->GetNumberOfFiles(); ++i)
-    {
-      const std::string name = listing->GetFile(i);
-      if (name.size() > 4 && name.substr(name.size() - 4) == ".vtu")
-      {
-        files.push_back(name);
-      }
-    }
-    std::sort(files.begin(), files.end());
   }
 
   std::printf("vtkTetMeshBuilder benchmark: SMP backend %s, %d threads, median of %d runs\n",
@@ -201,93 +310,7 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "%s: no cells (not read?)\n", path.c_str());
       continue;
     }
-    std::vector<double> original(3 * static_cast<size_t>(grid->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-    {
-      grid->GetPoints()->GetPoint(i, original.data() + 3 * i);
-    }
-
-    // First build of a fresh builder and layout: memory not yet touched (page faults included).
-    std::vector<double> cold;
-    for (int r = 0; r < runs; ++r)
-    {
-      vtkNew<vtkTetMeshBuilder> builder;
-      vtkNew<vtkTetMeshCompactLayout> layout;
-      const double start = vtkTimerLog::GetUniversalTime();
-      layout->Build(builder->Build(grid));
-      cold.push_back(vtkTimerLog::GetUniversalTime() - start);
-    }
-    const double coldTime = Median(cold);
-
-    vtkNew<vtkTetMeshBuilder> builder;
-    vtkNew<vtkTetMeshCompactLayout> compact;
-    vtkNew<vtkTetMeshPaperLayout> paper;
-    vtkTetMesh* mesh = builder->Build(grid);
-    if (!mesh->GetReport()->GetUsable())
-    {
-      std::fprintf(stderr, "%s: %s\n", file.c_str(), mesh->GetReport()->GetErrorMessage());
-      continue;
-    }
-    const double numTets = static_cast<double>(mesh->GetNumberOfTetrahedra());
-    compact->Build(mesh);
-    paper->Build(mesh);
-
-    auto invalidate = [&]() { builder->Invalidate(); };
-    double compactCpu = 0.0;
-    const double compactTime = Time(
-      runs, invalidate, [&]() { compact->Build(builder->Build(grid)); }, &compactCpu);
-    const double paperTime = Time(runs, invalidate, [&]() { paper->Build(builder->Build(grid)); });
-    builder->SpatialOrderingOn();
-    const double mortonTime =
-      Time(runs, invalidate, [&]() { compact->Build(builder->Build(grid)); });
-    builder->SpatialOrderingOff();
-    compact->Build(builder->Build(grid));
-
-    int call = 0;
-    bool pointsPath = true;
-    const double pointsTime = Time(
-      runs, [&]() { Move(grid, original, ++call); },
-      [&]()
-      {
-        compact->Update(builder->Build(grid));
-        pointsPath = pointsPath && builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints;
-      });
-    if (!pointsPath)
-    {
-      std::fprintf(stderr, "%s: the points-only path was not taken\n", file.c_str());
-    }
-    paper->Build(mesh);
-
-    std::printf(
-      "| %s | %.0f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
-      "%.1f | %.1f | %.1f | %.2f | %.2f |\n",
-      file.c_str(), numTets, 1e3 * compactTime, numTets / compactTime / 1e6, 1e3 * compactCpu,
-      1e3 * paperTime, numTets / paperTime / 1e6, 1e3 * mortonTime, numTets / mortonTime / 1e6,
-      1e3 * pointsTime, numTets / pointsTime / 1e6, 1e3 * coldTime, numTets / coldTime / 1e6,
-      paper->GetBytesPerTet(), paper->GetBytesPerTetWithBoundary(), compact->GetBytesPerTet(),
-      compact->GetBytesPerTetWithBoundary());
-    if (phases)
-    {
-      std::map<std::string, std::vector<double>> perPhase;
-      vtkTimerLog::LoggingOn();
-      for (int r = 0; r < runs; ++r)
-      {
-        builder->Invalidate();
-        vtkTimerLog::ResetLog();
-        compact->Build(builder->Build(grid));
-        for (const auto& phase : EventTimes())
-        {
-          perPhase[phase.first].push_back(phase.second);
-        }
-      }
-      vtkTimerLog::LoggingOff();
-      std::printf("|  phases of the full build, ms: ");
-      for (const auto& phase : perPhase)
-      {
-        std::printf(" %s %.1f;", phase.first.c_str(), Median(phase.second));
-      }
-      std::printf(" |\n");
-    }
+    BenchmarkMesh(grid, file, runs, phases);
     std::fflush(stdout);
   }
   return EXIT_SUCCESS;

@@ -26,48 +26,32 @@
 //
 // The output is deterministic: the same build writes the same bytes. Counts are checked against
 // the table below with --verify (after reading the files back).
+#include "DatasetLadderMeshes.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
-#include "vtkImageChangeInformation.h"
 #include "vtkImageData.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
-#include "vtkPolyData.h"
-#include "vtkRTAnalyticSource.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
-#include "vtkStringArray.h"
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkXMLUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
-#ifdef TRC_HAVE_TETGEN
-#include "vtkDataSetSurfaceFilter.h"
-#include "vtkTetGenMesher.h"
-#include "vtkThreshold.h"
-#endif
-
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <sys/resource.h>
@@ -77,6 +61,17 @@
 
 namespace
 {
+using ladder::AddProvenance;
+using ladder::MakeWavelet;
+using ladder::OrientMesh;
+#ifdef TRC_HAVE_TETGEN
+using ladder::MakeLattice;
+using ladder::MakeTetGen;
+using ladder::ReadOFF;
+using ladder::ReadPoly;
+using ladder::Surface;
+#endif
+
 //------------------------------------------------------------------------------
 // The ladder. For wavelet rungs the parameter is the number of voxels per axis (5 n^3
 // tetrahedra); for TetGen rungs it is TetGen's maximum volume (-a), with -q1.414. The expected
@@ -298,405 +293,6 @@ double PeakRSSMiB()
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-// Swaps p2 and p3 of every tetrahedron with det[p1-p0, p2-p0, p3-p0] < 0 (docs/design.md asks
-// for positive tetrahedra); returns how many were swapped and how many have zero volume.
-template <typename ConnT>
-void OrientPositively(
-  vtkPoints* points, vtkCellArray* cells, ConnT* conn, vtkIdType& swapped, vtkIdType& degenerate)
-{
-  vtkSMPThreadLocal<vtkIdType> localSwapped, localDegenerate;
-  const vtkIdType numberOfCells = cells->GetNumberOfCells();
-  vtkSMPTools::For(0, numberOfCells,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      vtkIdType& s = localSwapped.Local();
-      vtkIdType& d = localDegenerate.Local();
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        auto* ids = conn + 4 * t;
-        double p[4][3];
-        for (int k = 0; k < 4; ++k)
-        {
-          points->GetPoint(static_cast<vtkIdType>(ids[k]), p[k]);
-        }
-        double e[3][3];
-        for (int k = 0; k < 3; ++k)
-        {
-          vtkMath::Subtract(p[k + 1], p[0], e[k]);
-        }
-        const double det = vtkMath::Determinant3x3(e[0], e[1], e[2]);
-        if (det < 0.0)
-        {
-          std::swap(ids[2], ids[3]);
-          ++s;
-        }
-        else if (det == 0.0)
-        {
-          ++d;
-        }
-      }
-    });
-  swapped = degenerate = 0;
-  for (vtkIdType s : localSwapped)
-  {
-    swapped += s;
-  }
-  for (vtkIdType d : localDegenerate)
-  {
-    degenerate += d;
-  }
-}
-
-// Checks that every cell is a tetrahedron stored as 4 consecutive ids, then orients them.
-bool OrientMesh(vtkUnstructuredGrid* mesh, vtkIdType& swapped, vtkIdType& degenerate)
-{
-  vtkCellArray* cells = mesh->GetCells();
-  const vtkIdType n = cells->GetNumberOfCells();
-  if (cells->GetNumberOfConnectivityIds() != 4 * n)
-  {
-    return false;
-  }
-  vtkUnsignedCharArray* types = mesh->GetCellTypesArray();
-  for (vtkIdType c = 0; c < n; ++c)
-  {
-    if (types->GetValue(c) != VTK_TETRA)
-    {
-      return false;
-    }
-  }
-  if (cells->IsStorage64Bit())
-  {
-    OrientPositively(mesh->GetPoints(), cells, cells->GetConnectivityArray64()->GetPointer(0),
-      swapped, degenerate);
-  }
-  else
-  {
-    OrientPositively(mesh->GetPoints(), cells, cells->GetConnectivityArray32()->GetPointer(0),
-      swapped, degenerate);
-  }
-  cells->Modified();
-  return true;
-}
-
-void AddProvenance(vtkUnstructuredGrid* mesh, const std::string& text)
-{
-  vtkNew<vtkStringArray> provenance;
-  provenance->SetName("Provenance");
-  provenance->InsertNextValue(text);
-  mesh->GetFieldData()->AddArray(provenance);
-}
-
-//------------------------------------------------------------------------------
-vtkSmartPointer<vtkUnstructuredGrid> MakeWavelet(int n, std::string& provenance)
-{
-  // Extent lo..hi (n voxels) around the source's centre 0, then scaled to [-10,10]^3 so that
-  // every rung fits the same camera. vtkRTAnalyticSource normalises its field by the whole
-  // extent, so the field has the same shape at every size.
-  const int lo = -(n / 2);
-  const int hi = lo + n;
-  vtkNew<vtkRTAnalyticSource> source;
-  source->SetWholeExtent(lo, hi, lo, hi, lo, hi);
-  vtkNew<vtkImageChangeInformation> scale;
-  scale->SetInputConnection(source->GetOutputPort());
-  const double spacing = 20.0 / n;
-  scale->SetOutputSpacing(spacing, spacing, spacing);
-  const double origin = -10.0 - lo * spacing;
-  scale->SetOutputOrigin(origin, origin, origin);
-  vtkNew<vtkDataSetTriangleFilter> tetrahedra;
-  tetrahedra->SetInputConnection(scale->GetOutputPort());
-  tetrahedra->TetrahedraOnlyOn();
-  tetrahedra->Update();
-  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  mesh->ShallowCopy(tetrahedra->GetOutput());
-  std::ostringstream text;
-  text << "vtkRTAnalyticSource extent [" << lo << "," << hi << "]^3 scaled to [-10,10]^3, "
-       << "vtkDataSetTriangleFilter (5 tetrahedra per voxel); scalar RTData";
-  provenance = text.str();
-  return mesh;
-}
-
-#ifdef TRC_HAVE_TETGEN
-//------------------------------------------------------------------------------
-struct Surface
-{
-  vtkSmartPointer<vtkPolyData> PolyData;
-  std::vector<std::array<double, 3>> Holes;
-  std::vector<std::array<double, 5>> Regions;
-  bool PolygonsAsFacets = false;
-  std::string Description;
-};
-
-// A Geomview .off polyhedron, read as TetGen reads it (double precision, one facet per face).
-bool ReadOFF(const std::string& fileName, Surface& surface)
-{
-  std::ifstream in(fileName);
-  std::string header;
-  vtkIdType numberOfPoints = 0, numberOfFaces = 0, numberOfEdges = 0;
-  if (!(in >> header >> numberOfPoints >> numberOfFaces >> numberOfEdges) || header != "OFF")
-  {
-    return false;
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numberOfPoints);
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    double x[3];
-    in >> x[0] >> x[1] >> x[2];
-    points->SetPoint(i, x);
-  }
-  vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> ids;
-  for (vtkIdType f = 0; f < numberOfFaces && in; ++f)
-  {
-    vtkIdType n = 0;
-    in >> n;
-    ids.resize(n);
-    for (auto& id : ids)
-    {
-      in >> id;
-    }
-    polys->InsertNextCell(n, ids.data());
-  }
-  if (!in)
-  {
-    return false;
-  }
-  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
-  surface.PolyData->SetPoints(points);
-  surface.PolyData->SetPolys(polys);
-  return true;
-}
-
-// Reads the next line that is not empty or a comment, split into words.
-bool NextRecord(std::istream& in, std::istringstream& record)
-{
-  std::string line;
-  while (std::getline(in, line))
-  {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos)
-    {
-      line.erase(hash);
-    }
-    if (line.find_first_not_of(" \t\r") != std::string::npos)
-    {
-      record.clear();
-      record.str(line);
-      return true;
-    }
-  }
-  return false;
-}
-
-// A TetGen .poly file whose facets are single polygons without facet holes (comb.poly and
-// hollowcube.poly are): its points, facets, hole list and region list.
-bool ReadPoly(const std::string& fileName, Surface& surface)
-{
-  std::ifstream in(fileName);
-  std::istringstream record;
-  vtkIdType numberOfPoints = 0;
-  int dimension = 0, attributes = 0, markers = 0;
-  if (!NextRecord(in, record) ||
-    !(record >> numberOfPoints >> dimension >> attributes >> markers) || dimension != 3 ||
-    numberOfPoints <= 0)
-  {
-    return false;
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numberOfPoints);
-  vtkIdType firstNumber = 0;
-  for (vtkIdType i = 0; i < numberOfPoints; ++i)
-  {
-    vtkIdType index;
-    double x[3];
-    if (!NextRecord(in, record) || !(record >> index >> x[0] >> x[1] >> x[2]))
-    {
-      return false;
-    }
-    if (i == 0)
-    {
-      firstNumber = index;
-    }
-    points->SetPoint(i, x);
-  }
-  vtkIdType numberOfFacets = 0;
-  if (!NextRecord(in, record) || !(record >> numberOfFacets >> markers))
-  {
-    return false;
-  }
-  vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> ids;
-  for (vtkIdType f = 0; f < numberOfFacets; ++f)
-  {
-    int polygons = 0, facetHoles = 0;
-    if (!NextRecord(in, record) || !(record >> polygons))
-    {
-      return false;
-    }
-    record >> facetHoles;
-    if (polygons != 1 || facetHoles != 0)
-    {
-      std::cerr << "error: " << fileName << ": facet " << f
-                << " has several polygons or holes, which this reader does not support\n";
-      return false;
-    }
-    vtkIdType n = 0;
-    if (!NextRecord(in, record) || !(record >> n) || n < 3)
-    {
-      return false;
-    }
-    ids.resize(n);
-    for (auto& id : ids)
-    {
-      record >> id;
-      id -= firstNumber;
-    }
-    if (!record)
-    {
-      return false;
-    }
-    polys->InsertNextCell(n, ids.data());
-  }
-  vtkIdType holes = 0;
-  if (NextRecord(in, record) && (record >> holes))
-  {
-    for (vtkIdType h = 0; h < holes; ++h)
-    {
-      vtkIdType index;
-      std::array<double, 3> x;
-      if (!NextRecord(in, record) || !(record >> index >> x[0] >> x[1] >> x[2]))
-      {
-        return false;
-      }
-      surface.Holes.push_back(x);
-    }
-    vtkIdType regions = 0;
-    if (NextRecord(in, record) && (record >> regions))
-    {
-      for (vtkIdType r = 0; r < regions; ++r)
-      {
-        vtkIdType index;
-        std::array<double, 5> region = { 0, 0, 0, 0, -1 };
-        if (!NextRecord(in, record) || !(record >> index >> region[0] >> region[1] >> region[2]))
-        {
-          return false;
-        }
-        record >> region[3] >> region[4];
-        surface.Regions.push_back(region);
-      }
-    }
-  }
-  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
-  surface.PolyData->SetPoints(points);
-  surface.PolyData->SetPolys(polys);
-  // As `tetgen file.poly` does: every polygon is one facet, triangulated by TetGen.
-  surface.PolygonsAsFacets = true;
-  return true;
-}
-
-// The lattice: voxels of a (3n+1)^3 grid with unit spacing, a voxel being solid when at least
-// two of its indices are multiples of 3 (bars of 1x1 section along the three axes, meeting at
-// nodes every 3 units). Its boundary quads come from vtkThreshold + vtkDataSetSurfaceFilter.
-Surface MakeLattice(int n)
-{
-  const int m = 3 * n + 1;
-  vtkNew<vtkImageData> grid;
-  grid->SetDimensions(m + 1, m + 1, m + 1);
-  vtkNew<vtkUnsignedCharArray> solid;
-  solid->SetName("Solid");
-  solid->SetNumberOfValues(static_cast<vtkIdType>(m) * m * m);
-  for (int k = 0; k < m; ++k)
-  {
-    for (int j = 0; j < m; ++j)
-    {
-      for (int i = 0; i < m; ++i)
-      {
-        const int onAxes = (i % 3 == 0) + (j % 3 == 0) + (k % 3 == 0);
-        solid->SetValue(i + m * (j + m * static_cast<vtkIdType>(k)), onAxes >= 2 ? 1 : 0);
-      }
-    }
-  }
-  grid->GetCellData()->SetScalars(solid);
-  vtkNew<vtkThreshold> threshold;
-  threshold->SetInputData(grid);
-  threshold->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Solid");
-  threshold->SetLowerThreshold(0.5);
-  threshold->SetUpperThreshold(1.5);
-  threshold->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
-  vtkNew<vtkDataSetSurfaceFilter> boundary;
-  boundary->SetInputConnection(threshold->GetOutputPort());
-  boundary->Update();
-  Surface surface;
-  surface.PolyData = vtkSmartPointer<vtkPolyData>::New();
-  surface.PolyData->SetPoints(boundary->GetOutput()->GetPoints());
-  surface.PolyData->SetPolys(boundary->GetOutput()->GetPolys());
-  surface.PolygonsAsFacets = true; // planar quads
-  return surface;
-}
-
-vtkSmartPointer<vtkUnstructuredGrid> MakeTetGen(
-  const Surface& surface, double maxVolume, std::string& switches)
-{
-  vtkNew<vtkTetGenMesher> mesher;
-  mesher->SetInputData(surface.PolyData);
-  mesher->QualityOn();
-  mesher->SetRadiusEdgeRatio(1.414);
-  mesher->SetMaximumVolume(maxVolume);
-  mesher->SetPolygonsAsFacets(surface.PolygonsAsFacets);
-  for (const auto& hole : surface.Holes)
-  {
-    mesher->AddHole(hole[0], hole[1], hole[2]);
-  }
-  for (const auto& region : surface.Regions)
-  {
-    mesher->AddRegion(region[0], region[1], region[2], region[3], region[4]);
-  }
-  mesher->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  mesher->Update();
-  switches = mesher->GetTetGenSwitches();
-  if (mesher->GetErrorCode() != 0 || mesher->GetOutput()->GetNumberOfCells() == 0)
-  {
-    return nullptr;
-  }
-  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  mesh->ShallowCopy(mesher->GetOutput());
-
-  // "Synthetic" from the double coordinates, then the points stored as float (as the shipped
-  // TetGen meshes are; TiledRayCast keeps float coordinates on the GPU anyway).
-  vtkDataArray* xyz = mesh->GetPoints()->GetData();
-  const vtkIdType n = mesh->GetNumberOfPoints();
-  vtkNew<vtkFloatArray> synthetic;
-  synthetic->SetName("Synthetic");
-  synthetic->SetNumberOfValues(n);
-  vtkNew<vtkFloatArray> single;
-  single->SetNumberOfComponents(3);
-  single->SetNumberOfTuples(n);
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double p[3];
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        xyz->GetTuple(i, p);
-        synthetic->SetValue(i,
-          static_cast<float>(
-            0.5 + 0.5 * std::sin(1.5 * p[0]) * std::cos(1.5 * p[1]) * std::cos(2.0 * p[2])));
-        single->SetTypedTuple(i,
-          std::array<float, 3>{
-            static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]) }
-            .data());
-      }
-    });
-  vtkNew<vtkPoints> points;
-  points->SetData(single);
-  mesh->SetPoints(points);
-  mesh->GetPointData()->SetScalars(synthetic);
-  return mesh;
-}
-#endif
-
 //------------------------------------------------------------------------------
 bool Write(vtkUnstructuredGrid* mesh, const std::string& fileName, const std::string& compressor)
 {
@@ -867,6 +463,205 @@ std::string Thousands(vtkIdType value)
   }
   return digits;
 }
+// Whether the options select `rung` (its family, its name, its size).
+bool Selected(const Options& options, const Rung& rung)
+{
+  const std::string family = rung.Family;
+  if (!options.Families.empty() &&
+    std::find(options.Families.begin(), options.Families.end(), family) == options.Families.end())
+  {
+    return false;
+  }
+  if (!options.Rungs.empty() &&
+    std::find(options.Rungs.begin(), options.Rungs.end(), rung.Name) == options.Rungs.end())
+  {
+    return false;
+  }
+  return options.MaxTets < 0 || rung.Tetrahedra <= options.MaxTets;
+}
+
+// The table of the selected rungs (--list).
+void ListRungs(const Options& options)
+{
+  std::cout << "| rung | family | parameter | points | tetrahedra |\n|---|---|---|---|---|\n";
+  for (const Rung& rung : Ladder)
+  {
+    if (!Selected(options, rung))
+    {
+      continue;
+    }
+    std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
+              << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
+  }
+}
+
+// The output directory, created where it does not exist; false (with a message) where it cannot
+// be or lies in the source tree.
+bool PrepareOutputDirectory(const std::string& directory)
+{
+  // Never write into the source tree (a build tree inside it, as ./build, is fine). Checked on
+  // the normalised path before creating anything, and on the real path (symbolic links) after.
+  auto inside = [](const std::string& path, const std::string& directory)
+  { return path == directory || path.rfind(directory + "/", 0) == 0; };
+  auto forbidden = [&](const std::string& path, bool real)
+  {
+    auto normal = [&](const std::string& p) {
+      return real ? vtksys::SystemTools::GetRealPath(p) : vtksys::SystemTools::CollapseFullPath(p);
+    };
+    const std::string sources = normal(TRC_SOURCE_DIR);
+    if (inside(normal(path), sources) && !inside(normal(path), normal(TRC_BINARY_DIR)))
+    {
+      std::cerr << "error: " << normal(path) << " is inside the source tree " << sources
+                << "; write the ladder elsewhere\n";
+      return true;
+    }
+    return false;
+  };
+  if (forbidden(directory, false))
+  {
+    return false;
+  }
+  if (!vtksys::SystemTools::FileIsDirectory(directory) &&
+    !vtksys::SystemTools::MakeDirectory(directory))
+  {
+    std::cerr << "error: cannot create " << directory << "\n";
+    return false;
+  }
+  if (forbidden(directory, true))
+  {
+    return false;
+  }
+  return true;
+}
+
+// An existing rung read back and checked (--verify-existing); true when it passes.
+bool VerifyExistingRung(const Options& options, const Rung& rung)
+{
+  const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+  const double start = vtkTimerLog::GetUniversalTime();
+  bool ok = Verify(fileName, rung);
+  for (const auto& comparison : options.Comparisons)
+  {
+    ok = (comparison.first != rung.Name || Compare(fileName, comparison.second, rung)) && ok;
+  }
+  std::cout << rung.Name << ": " << (ok ? "verified" : "FAILED") << " ("
+            << vtkTimerLog::GetUniversalTime() - start << " s)" << std::endl;
+  return ok;
+}
+
+// Generates, orients, writes and checks `rung`: the number of its checks that failed, or -1
+// where it could not be generated or written (a message says why).
+int MakeRung(const Options& options, const Rung& rung)
+{
+  const std::string family = rung.Family;
+  int failures = 0;
+#ifndef TRC_HAVE_TETGEN
+  if (IsTetGenFamily(family))
+  {
+    std::cerr << "skipping " << rung.Name
+              << ": built without TiledRayCast::FiltersTetGen (TILEDRAYCAST_ENABLE_TETGEN)\n";
+    return 0;
+  }
+#endif
+  const double start = vtkTimerLog::GetUniversalTime();
+  vtkSmartPointer<vtkUnstructuredGrid> mesh;
+  std::string provenance;
+  if (family == "wavelet")
+  {
+    mesh = MakeWavelet(static_cast<int>(rung.Parameter), provenance);
+  }
+#ifdef TRC_HAVE_TETGEN
+  else
+  {
+    Surface surface;
+    std::string input;
+    bool read = false;
+    if (family == "torus")
+    {
+      input = "torus.off";
+      read = ReadOFF(options.Inputs + "/" + input, surface);
+    }
+    else if (family == "comb")
+    {
+      input = "comb.poly";
+      read = ReadPoly(options.Inputs + "/" + input, surface);
+    }
+    else
+    {
+      input = "lattice";
+      surface = MakeLattice(4);
+      read = surface.PolyData && surface.PolyData->GetNumberOfPolys() > 0;
+    }
+    if (!read)
+    {
+      std::cerr << "error: cannot read " << options.Inputs << "/" << input << "\n";
+      return -1;
+    }
+    std::string switches;
+    mesh = MakeTetGen(surface, rung.Parameter, switches);
+    std::ostringstream text;
+    text << "vtkTetGenMesher (TetGen 1.5 library) -" << switches << " on " << input
+         << "; scalar Synthetic = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z)";
+    provenance = text.str();
+  }
+#endif
+  if (!mesh)
+  {
+    std::cerr << "error: " << rung.Name << " could not be generated\n";
+    return -1;
+  }
+  vtkIdType swapped = 0, degenerate = 0;
+  if (!OrientMesh(mesh, swapped, degenerate))
+  {
+    std::cerr << "error: " << rung.Name << " holds cells other than tetrahedra\n";
+    return -1;
+  }
+  AddProvenance(mesh, std::string("MakeDatasetLadder ") + rung.Name + ": " + provenance);
+  const double generated = vtkTimerLog::GetUniversalTime();
+
+  const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
+  if (!Write(mesh, fileName, options.Compressor))
+  {
+    std::cerr << "error: cannot write " << fileName << "\n";
+    return -1;
+  }
+  const double written = vtkTimerLog::GetUniversalTime();
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  const vtkIdType tets = mesh->GetNumberOfCells();
+  mesh = nullptr;
+
+  char row[512];
+  std::snprintf(row, sizeof(row), "| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.0f |", rung.Name,
+    family == "wavelet" ? "yes" : "no", Thousands(points).c_str(), Thousands(tets).c_str(),
+    generated - start, written - generated,
+    static_cast<double>(vtksys::SystemTools::FileLength(fileName)) / (1024.0 * 1024.0),
+    PeakRSSMiB());
+  std::cout << row << std::endl;
+  if (swapped > 0 || degenerate > 0)
+  {
+    std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
+              << std::endl;
+  }
+  if (points != rung.Points || tets != rung.Tetrahedra)
+  {
+    std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
+              << " tetrahedra\n";
+    ++failures;
+  }
+  if (options.Verify && !Verify(fileName, rung))
+  {
+    ++failures;
+  }
+  for (const auto& comparison : options.Comparisons)
+  {
+    if (comparison.first == rung.Name && !Compare(fileName, comparison.second, rung))
+    {
+      ++failures;
+    }
+  }
+  return failures;
+}
+
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
@@ -886,66 +681,12 @@ int main(int argc, char* argv[])
     Usage(std::cerr);
     return EXIT_FAILURE;
   }
-  auto selected = [&](const Rung& rung)
-  {
-    const std::string family = rung.Family;
-    if (!options.Families.empty() &&
-      std::find(options.Families.begin(), options.Families.end(), family) == options.Families.end())
-    {
-      return false;
-    }
-    if (!options.Rungs.empty() &&
-      std::find(options.Rungs.begin(), options.Rungs.end(), rung.Name) == options.Rungs.end())
-    {
-      return false;
-    }
-    return options.MaxTets < 0 || rung.Tetrahedra <= options.MaxTets;
-  };
-
   if (options.List)
   {
-    std::cout << "| rung | family | parameter | points | tetrahedra |\n|---|---|---|---|---|\n";
-    for (const Rung& rung : Ladder)
-    {
-      if (!selected(rung))
-      {
-        continue;
-      }
-      std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
-                << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
-    }
+    ListRungs(options);
     return EXIT_SUCCESS;
   }
-
-  // Never write into the source tree (a build tree inside it, as ./build, is fine). Checked on
-  // the normalised path before creating anything, and on the real path (symbolic links) after.
-  auto inside = [](const std::string& path, const std::string& directory)
-  { return path == directory || path.rfind(directory + "/", 0) == 0; };
-  auto forbidden = [&](const std::string& path, bool real)
-  {
-    auto normal = [&](const std::string& p) {
-      return real ? vtksys::SystemTools::GetRealPath(p) : vtksys::SystemTools::CollapseFullPath(p);
-    };
-    const std::string sources = normal(TRC_SOURCE_DIR);
-    if (inside(normal(path), sources) && !inside(normal(path), normal(TRC_BINARY_DIR)))
-    {
-      std::cerr << "error: " << normal(path) << " is inside the source tree " << sources
-                << "; write the ladder elsewhere\n";
-      return true;
-    }
-    return false;
-  };
-  if (forbidden(options.OutputDirectory, false))
-  {
-    return EXIT_FAILURE;
-  }
-  if (!vtksys::SystemTools::FileIsDirectory(options.OutputDirectory) &&
-    !vtksys::SystemTools::MakeDirectory(options.OutputDirectory))
-  {
-    std::cerr << "error: cannot create " << options.OutputDirectory << "\n";
-    return EXIT_FAILURE;
-  }
-  if (forbidden(options.OutputDirectory, true))
+  if (!PrepareOutputDirectory(options.OutputDirectory))
   {
     return EXIT_FAILURE;
   }
@@ -958,129 +699,21 @@ int main(int argc, char* argv[])
   int failures = 0;
   for (const Rung& rung : Ladder)
   {
-    if (!selected(rung))
+    if (!Selected(options, rung))
     {
       continue;
     }
-    const std::string family = rung.Family;
     if (options.VerifyExisting)
     {
-      const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
-      const double start = vtkTimerLog::GetUniversalTime();
-      bool ok = Verify(fileName, rung);
-      for (const auto& comparison : options.Comparisons)
-      {
-        ok = (comparison.first != rung.Name || Compare(fileName, comparison.second, rung)) && ok;
-      }
-      std::cout << rung.Name << ": " << (ok ? "verified" : "FAILED") << " ("
-                << vtkTimerLog::GetUniversalTime() - start << " s)" << std::endl;
-      failures += ok ? 0 : 1;
+      failures += VerifyExistingRung(options, rung) ? 0 : 1;
       continue;
     }
-#ifndef TRC_HAVE_TETGEN
-    if (IsTetGenFamily(family))
+    const int failed = MakeRung(options, rung);
+    if (failed < 0)
     {
-      std::cerr << "skipping " << rung.Name
-                << ": built without TiledRayCast::FiltersTetGen (TILEDRAYCAST_ENABLE_TETGEN)\n";
-      continue;
-    }
-#endif
-    const double start = vtkTimerLog::GetUniversalTime();
-    vtkSmartPointer<vtkUnstructuredGrid> mesh;
-    std::string provenance;
-    if (family == "wavelet")
-    {
-      mesh = MakeWavelet(static_cast<int>(rung.Parameter), provenance);
-    }
-#ifdef TRC_HAVE_TETGEN
-    else
-    {
-      Surface surface;
-      std::string input;
-      bool read = false;
-      if (family == "torus")
-      {
-        input = "torus.off";
-        read = ReadOFF(options.Inputs + "/" + input, surface);
-      }
-      else if (family == "comb")
-      {
-        input = "comb.poly";
-        read = ReadPoly(options.Inputs + "/" + input, surface);
-      }
-      else
-      {
-        input = "lattice";
-        surface = MakeLattice(4);
-        read = surface.PolyData && surface.PolyData->GetNumberOfPolys() > 0;
-      }
-      if (!read)
-      {
-        std::cerr << "error: cannot read " << options.Inputs << "/" << input << "\n";
-        return EXIT_FAILURE;
-      }
-      std::string switches;
-      mesh = MakeTetGen(surface, rung.Parameter, switches);
-      std::ostringstream text;
-      text << "vtkTetGenMesher (TetGen 1.5 library) -" << switches << " on " << input
-           << "; scalar Synthetic = 0.5+0.5*sin(1.5x)*cos(1.5y)*cos(2z)";
-      provenance = text.str();
-    }
-#endif
-    if (!mesh)
-    {
-      std::cerr << "error: " << rung.Name << " could not be generated\n";
       return EXIT_FAILURE;
     }
-    vtkIdType swapped = 0, degenerate = 0;
-    if (!OrientMesh(mesh, swapped, degenerate))
-    {
-      std::cerr << "error: " << rung.Name << " holds cells other than tetrahedra\n";
-      return EXIT_FAILURE;
-    }
-    AddProvenance(mesh, std::string("MakeDatasetLadder ") + rung.Name + ": " + provenance);
-    const double generated = vtkTimerLog::GetUniversalTime();
-
-    const std::string fileName = options.OutputDirectory + "/" + rung.Name + ".vtu";
-    if (!Write(mesh, fileName, options.Compressor))
-    {
-      std::cerr << "error: cannot write " << fileName << "\n";
-      return EXIT_FAILURE;
-    }
-    const double written = vtkTimerLog::GetUniversalTime();
-    const vtkIdType points = mesh->GetNumberOfPoints();
-    const vtkIdType tets = mesh->GetNumberOfCells();
-    mesh = nullptr;
-
-    char row[512];
-    std::snprintf(row, sizeof(row), "| %s | %s | %s | %s | %.1f | %.1f | %.1f | %.0f |", rung.Name,
-      family == "wavelet" ? "yes" : "no", Thousands(points).c_str(), Thousands(tets).c_str(),
-      generated - start, written - generated,
-      static_cast<double>(vtksys::SystemTools::FileLength(fileName)) / (1024.0 * 1024.0),
-      PeakRSSMiB());
-    std::cout << row << std::endl;
-    if (swapped > 0 || degenerate > 0)
-    {
-      std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
-                << std::endl;
-    }
-    if (points != rung.Points || tets != rung.Tetrahedra)
-    {
-      std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
-                << " tetrahedra\n";
-      ++failures;
-    }
-    if (options.Verify && !Verify(fileName, rung))
-    {
-      ++failures;
-    }
-    for (const auto& comparison : options.Comparisons)
-    {
-      if (comparison.first == rung.Name && !Compare(fileName, comparison.second, rung))
-      {
-        ++failures;
-      }
-    }
+    failures += failed;
   }
   if (failures > 0)
   {

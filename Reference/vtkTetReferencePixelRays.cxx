@@ -10,11 +10,47 @@
 =========================================================================*/
 #include "vtkTetReferencePixelRays.h"
 
+#include "vtkCamera.h"
+#include "vtkMatrix4x4.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
 
 #include <algorithm>
 #include <cmath>
+
+//------------------------------------------------------------------------------
+void vtkTetReferencePixelRays::SetUp(vtkCamera* camera, int width, int height,
+  const double offset[2], const float* depth, const double* center, vtkPlaneCollection* planes)
+{
+  this->Width = width;
+  this->Height = height;
+  this->OffsetX = offset[0];
+  this->OffsetY = offset[1];
+  this->Depth = depth;
+  this->Center = center;
+  // Clip coordinates of the camera to world coordinates.
+  vtkMatrix4x4::DeepCopy(this->Inverse,
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0));
+  vtkMatrix4x4::Invert(this->Inverse, this->Inverse);
+  this->SetClippingPlanes(planes);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetReferencePixelRays::Direction(
+  int i, int j, double& x, double& y, double nearP[3], double d[3], double& dd) const
+{
+  x = 2.0 * (i + this->OffsetX) / this->Width - 1.0;
+  y = 2.0 * (j + this->OffsetY) / this->Height - 1.0;
+  double farP[3];
+  this->Unproject(x, y, -1.0, nearP);
+  this->Unproject(x, y, 1.0, farP);
+  for (int k = 0; k < 3; ++k)
+  {
+    d[k] = farP[k] - nearP[k];
+  }
+  dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  return dd > 0.0 && std::isfinite(dd);
+}
 
 //------------------------------------------------------------------------------
 void vtkTetReferencePixelRays::SetClippingPlanes(vtkPlaneCollection* planes)
@@ -95,17 +131,8 @@ bool vtkTetReferencePixelRays::Get(
   int i, int j, double origin[3], double d[3], double& zmin, double& zmax) const
 {
   const long long pixel = static_cast<long long>(j) * this->Width + i;
-  const double x = 2.0 * (i + this->OffsetX) / this->Width - 1.0;
-  const double y = 2.0 * (j + this->OffsetY) / this->Height - 1.0;
-  double nearP[3], farP[3];
-  this->Unproject(x, y, -1.0, nearP);
-  this->Unproject(x, y, 1.0, farP);
-  for (int k = 0; k < 3; ++k)
-  {
-    d[k] = farP[k] - nearP[k];
-  }
-  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (!(dd > 0.0) || !std::isfinite(dd))
+  double x, y, nearP[3], dd;
+  if (!this->Direction(i, j, x, y, nearP, d, dd))
   {
     return false;
   }
@@ -132,17 +159,8 @@ bool vtkTetReferencePixelRays::GetWorld(int i, int j, double nearP[3], double d[
   double& volumeMin, double& volumeMax, bool& volumes) const
 {
   const long long pixel = static_cast<long long>(j) * this->Width + i;
-  const double x = 2.0 * (i + this->OffsetX) / this->Width - 1.0;
-  const double y = 2.0 * (j + this->OffsetY) / this->Height - 1.0;
-  double farP[3];
-  this->Unproject(x, y, -1.0, nearP);
-  this->Unproject(x, y, 1.0, farP);
-  for (int k = 0; k < 3; ++k)
-  {
-    d[k] = farP[k] - nearP[k];
-  }
-  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-  if (!(dd > 0.0) || !std::isfinite(dd))
+  double x, y, dd;
+  if (!this->Direction(i, j, x, y, nearP, d, dd))
   {
     return false;
   }

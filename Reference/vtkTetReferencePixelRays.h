@@ -27,6 +27,7 @@
 #include <array>  // For std::array
 #include <vector> // For std::vector
 
+class vtkCamera;
 class vtkPlaneCollection;
 
 class vtkTetReferencePixelRays
@@ -38,6 +39,14 @@ public:
   double Inverse[16];           // clip coordinates to world coordinates
   // Subtracted from every point Get() gives (a prepared mesh's centre); null in GetWorld().
   const double* Center = nullptr;
+
+  /**
+   * Every member for `camera`'s rays through the pixels of a width x height image, sampled at
+   * `offset` in each pixel, ending at `depth` (or null), in the frame of `center` (or null:
+   * world coordinates), cut by `planes` (or null).
+   */
+  void SetUp(vtkCamera* camera, int width, int height, const double offset[2], const float* depth,
+    const double* center, vtkPlaneCollection* planes);
 
   /**
    * The clipping planes (world coordinates, the side the normal points to kept), in the frame of
@@ -72,6 +81,10 @@ private:
   std::vector<std::array<double, 4>> Clipping;
 
   void Unproject(double x, double y, double z, double p[3]) const;
+  // Pixel (i, j)'s NDC position (x, y), its near-plane point and direction d (far minus near
+  // point), dd = |d|^2; false for a degenerate direction.
+  bool Direction(
+    int i, int j, double& x, double& y, double nearP[3], double d[3], double& dd) const;
   // The part (lambdaMin, lambdaMax) of the ray nearP + lambda d of pixel `pixel` (at NDC x, y)
   // left by the opaque depth and the clipping planes; false when nothing is left.
   bool Range(double x, double y, long long pixel, const double nearP[3], const double d[3],

@@ -16,8 +16,8 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
-#include "vtkLightCollection.h"
 #include "vtkIntArray.h"
+#include "vtkLightCollection.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -53,11 +53,46 @@
 // crosses, exactly) and vtkTetReferenceCompositing (front-to-back compositing with
 // vtkTetRayIntegrator); for scenes of several volumes or with translucent layers,
 // vtkTetReferenceIntermixing (all media and fragments of a ray in depth order) instead of the
-// last (RenderScene(), in vtkTetReferenceRendererScene.cxx).
+// last (RenderScene()).
 namespace
 {
 using Hit = vtkTetReferenceRayCaster::Hit;
 using PixelRays = vtkTetReferencePixelRays;
+
+// The arrays of a rendered image: "RGBA" (4 components, double or float) and "NumberOfTets"
+// (the tetrahedra each ray crossed).
+struct OutputArrays
+{
+  OutputArrays(bool doublePrecision, vtkIdType numberOfPixels)
+  {
+    if (doublePrecision)
+    {
+      this->RGBA = vtkSmartPointer<vtkDoubleArray>::New();
+    }
+    else
+    {
+      this->RGBA = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    this->RGBA->SetName("RGBA");
+    this->RGBA->SetNumberOfComponents(4);
+    this->RGBA->SetNumberOfTuples(numberOfPixels);
+    this->Counts->SetName("NumberOfTets");
+    this->Counts->SetNumberOfTuples(numberOfPixels);
+  }
+  // The RGBA values as floats or as doubles (null for the other type).
+  float* Float() const
+  {
+    auto* a = vtkFloatArray::SafeDownCast(this->RGBA);
+    return a ? a->GetPointer(0) : nullptr;
+  }
+  double* Double() const
+  {
+    auto* a = vtkDoubleArray::SafeDownCast(this->RGBA);
+    return a ? a->GetPointer(0) : nullptr;
+  }
+  vtkSmartPointer<vtkDataArray> RGBA;
+  vtkNew<vtkIntArray> Counts;
+};
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -147,17 +182,8 @@ vtkStandardNewMacro(vtkTetReferenceRenderer);
 
 //------------------------------------------------------------------------------
 vtkTetReferenceRenderer::vtkTetReferenceRenderer()
-  : Input(nullptr)
-  , ScalarMode(VTK_SCALAR_MODE_DEFAULT)
-  , ArrayAccessMode(VTK_GET_ARRAY_BY_ID)
-  , ArrayId(-1)
-  , ArrayName(nullptr)
-  , VectorMode(vtkTetScalarSelection::DEFAULT)
-  , VectorComponent(0)
-  , VolumeProperty(nullptr)
+  : Own(vtkTetReferenceVolume::New())
   , Camera(nullptr)
-  , VolumeMatrix(vtkMatrix4x4::New())
-  , Volume(nullptr)
   , OpaqueDepth(nullptr)
   , DoublePrecisionOutput(0)
   , Output(vtkImageData::New())
@@ -175,86 +201,26 @@ vtkTetReferenceRenderer::vtkTetReferenceRenderer()
 //------------------------------------------------------------------------------
 vtkTetReferenceRenderer::~vtkTetReferenceRenderer()
 {
-  this->SetInputData(nullptr);
-  this->SetVolumeProperty(nullptr);
   this->SetCamera(nullptr);
-  this->SetVolume(nullptr);
   this->SetOpaqueDepth(nullptr);
   this->SetClippingPlanes(nullptr);
   this->SetLights(nullptr);
-  this->SetArrayName(nullptr);
-  this->VolumeMatrix->Delete();
+  this->Own->Delete();
   this->Output->Delete();
   this->Integrator->Delete();
   delete this->Internals;
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetInputData(vtkDataSet* input)
-{
-  vtkSetObjectBodyMacro(Input, vtkDataSet, input);
-}
+vtkCxxSetObjectMacro(vtkTetReferenceRenderer, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkTetReferenceRenderer, Lights, vtkLightCollection);
+vtkCxxSetObjectMacro(vtkTetReferenceRenderer, ClippingPlanes, vtkPlaneCollection);
+vtkCxxSetObjectMacro(vtkTetReferenceRenderer, OpaqueDepth, vtkFloatArray);
 
 //------------------------------------------------------------------------------
-vtkDataSet* vtkTetReferenceRenderer::GetInput()
+vtkMTimeType vtkTetReferenceRenderer::GetMTime()
 {
-  return this->Input;
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetVolumeProperty(vtkVolumeProperty* property)
-{
-  vtkSetObjectBodyMacro(VolumeProperty, vtkVolumeProperty, property);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetCamera(vtkCamera* camera)
-{
-  vtkSetObjectBodyMacro(Camera, vtkCamera, camera);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetVolume(vtkVolume* volume)
-{
-  vtkSetObjectBodyMacro(Volume, vtkVolume, volume);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetLights(vtkLightCollection* lights)
-{
-  vtkSetObjectBodyMacro(Lights, vtkLightCollection, lights);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetClippingPlanes(vtkPlaneCollection* planes)
-{
-  vtkSetObjectBodyMacro(ClippingPlanes, vtkPlaneCollection, planes);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetOpaqueDepth(vtkFloatArray* depth)
-{
-  vtkSetObjectBodyMacro(OpaqueDepth, vtkFloatArray, depth);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetVolumeMatrix(vtkMatrix4x4* matrix)
-{
-  if (matrix)
-  {
-    this->VolumeMatrix->DeepCopy(matrix);
-  }
-  else
-  {
-    this->VolumeMatrix->Identity();
-  }
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-vtkMatrix4x4* vtkTetReferenceRenderer::GetVolumeMatrix()
-{
-  return this->VolumeMatrix;
+  return std::max(this->Superclass::GetMTime(), this->Own->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -277,30 +243,6 @@ void vtkTetReferenceRenderer::SetScalarModeToUsePointFieldData()
 void vtkTetReferenceRenderer::SetScalarModeToUseCellFieldData()
 {
   this->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SelectScalarArray(int arrayNum)
-{
-  if (this->ArrayId == arrayNum && this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
-  {
-    return;
-  }
-  this->ArrayId = arrayNum;
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_ID;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SelectScalarArray(const char* arrayName)
-{
-  if (!arrayName)
-  {
-    return;
-  }
-  this->SetArrayName(arrayName);
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_NAME;
-  this->Modified();
 }
 
 //------------------------------------------------------------------------------
@@ -337,11 +279,7 @@ int vtkTetReferenceRenderer::Render()
   this->LastRayCastTime = 0.0;
   vtkInternals& in = *this->Internals;
 
-  vtkVolumeProperty* property = this->VolumeProperty;
-  if (!property && this->Volume)
-  {
-    property = this->Volume->GetProperty();
-  }
+  vtkVolumeProperty* property = this->Own->GetPropertyInForce();
   if (!in.Added.empty() || !in.Layers.empty())
   {
     return this->RenderScene(property);
@@ -364,34 +302,9 @@ int vtkTetReferenceRenderer::Render()
   const int width = this->ImageSize[0], height = this->ImageSize[1];
   const vtkIdType numPixels = static_cast<vtkIdType>(width) * height;
   PixelRays rays;
-  rays.Width = width;
-  rays.Height = height;
-  rays.OffsetX = this->SampleOffset[0];
-  rays.OffsetY = this->SampleOffset[1];
-  rays.Depth = depth;
-  rays.Center = in.Mesh.Center;
-  // Clip coordinates of the camera to world coordinates.
-  vtkMatrix4x4::DeepCopy(rays.Inverse,
-    this->Camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(width) / height, -1.0, 1.0));
-  vtkMatrix4x4::Invert(rays.Inverse, rays.Inverse);
-  rays.SetClippingPlanes(this->ClippingPlanes);
-
-  vtkSmartPointer<vtkDataArray> rgba;
-  if (this->DoublePrecisionOutput)
-  {
-    rgba = vtkSmartPointer<vtkDoubleArray>::New();
-  }
-  else
-  {
-    rgba = vtkSmartPointer<vtkFloatArray>::New();
-  }
-  rgba->SetName("RGBA");
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(numPixels);
-  vtkNew<vtkIntArray> counts;
-  counts->SetName("NumberOfTets");
-  counts->SetNumberOfTuples(numPixels);
+  rays.SetUp(
+    this->Camera, width, height, this->SampleOffset, depth, in.Mesh.Center, this->ClippingPlanes);
+  OutputArrays output(this->DoublePrecisionOutput != 0, numPixels);
   // The blend mode's settings: the data's scalar range normalises the scalar, as the mapper's.
   vtkTetReferenceBlending::Settings blending;
   blending.Mode = this->BlendMode;
@@ -411,12 +324,10 @@ int vtkTetReferenceRenderer::Render()
       }
     }
   }
-  in.CastRays(rays, this->Integrator, blending,
-    this->DoublePrecisionOutput ? nullptr : vtkFloatArray::SafeDownCast(rgba)->GetPointer(0),
-    this->DoublePrecisionOutput ? vtkDoubleArray::SafeDownCast(rgba)->GetPointer(0) : nullptr,
-    counts->GetPointer(0));
+  in.CastRays(rays, this->Integrator, blending, output.Float(), output.Double(),
+    output.Counts->GetPointer(0));
 
-  this->StoreOutput(rgba, counts);
+  this->StoreOutput(output.RGBA, output.Counts);
   timer->StopTimer();
   this->LastRayCastTime = timer->GetElapsedTime();
   return 1;
@@ -435,12 +346,13 @@ void vtkTetReferenceRenderer::StoreOutput(vtkDataArray* rgba, vtkDataArray* coun
 // `depth` gets the opaque depth's values, if any.
 bool vtkTetReferenceRenderer::CheckInputs(vtkVolumeProperty* property, const float*& depth)
 {
-  if (!this->Input)
+  vtkDataSet* input = this->GetInput();
+  if (!input)
   {
     vtkErrorMacro("No input.");
     return false;
   }
-  if (this->Input->GetNumberOfPoints() == 0 || this->Input->GetNumberOfCells() == 0)
+  if (input->GetNumberOfPoints() == 0 || input->GetNumberOfCells() == 0)
   {
     vtkErrorMacro("The input is empty.");
     return false;
@@ -491,17 +403,8 @@ bool vtkTetReferenceRenderer::CheckView(const float*& depth)
 bool vtkTetReferenceRenderer::PrepareMesh(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
-  vtkTetReferenceScene::Source source;
-  source.Input = this->Input;
+  vtkTetReferenceScene::Source source = vtkTetReferenceScene::MakeSource(this->Own);
   source.Property = property;
-  vtkMatrix4x4::DeepCopy(
-    source.Matrix, this->Volume ? this->Volume->GetMatrix() : this->VolumeMatrix);
-  source.ScalarMode = this->ScalarMode;
-  source.ArrayAccessMode = this->ArrayAccessMode;
-  source.ArrayId = this->ArrayId;
-  source.ArrayName = this->ArrayName;
-  source.VectorMode = this->VectorMode;
-  source.VectorComponent = this->VectorComponent;
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   std::string error;
@@ -545,12 +448,13 @@ bool vtkTetReferenceRenderer::InitializeIntegrator(vtkVolumeProperty* property)
 int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
 {
   vtkInternals& in = *this->Internals;
+  const bool ownInput = this->GetInput() != nullptr;
   const float* depth = nullptr;
-  if (this->Input && !this->CheckInputs(property, depth))
+  if (ownInput && !this->CheckInputs(property, depth))
   {
     return 0;
   }
-  if (!this->Input && !this->CheckView(depth))
+  if (!ownInput && !this->CheckView(depth))
   {
     return 0;
   }
@@ -563,12 +467,12 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
   }
   for (size_t v = 0; v <= in.Added.size(); ++v)
   {
-    vtkVolumeProperty* p = v == 0 ? (this->Input ? property : nullptr)
-                                  : in.Added[v - 1]->GetPropertyInForce();
+    vtkVolumeProperty* p =
+      v == 0 ? (ownInput ? property : nullptr) : in.Added[v - 1]->GetPropertyInForce();
     if (vtkTetReferenceShading::DependsOnGradient(p))
     {
       // The mixture of overlapping media would need each medium's shaded emission apart.
-      vtkErrorMacro("Volume " << (this->Input ? v : v - 1)
+      vtkErrorMacro("Volume " << (ownInput ? v : v - 1)
                               << " is shaded or has a gradient opacity: these render one volume "
                                  "without translucent layers, not a scene.");
       return 0;
@@ -595,7 +499,7 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
   }
   // The volumes: figures summed over them.
   vtkIdType tetrahedra[3] = { 0, 0, 0 };
-  if (this->Input)
+  if (ownInput)
   {
     if (!this->PrepareMesh(property) || !this->InitializeIntegrator(property))
     {
@@ -606,23 +510,13 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
     tetrahedra[1] = this->NumberOfDegenerateTetrahedra;
     tetrahedra[2] = this->NumberOfOverlappingTetrahedra;
   }
-  std::vector<vtkTetReferenceScene::Source> sources(in.Added.size());
-  for (size_t v = 0; v < in.Added.size(); ++v)
+  std::vector<vtkTetReferenceScene::Source> sources;
+  for (vtkTetReferenceVolume* volume : in.Added)
   {
-    vtkTetReferenceVolume* volume = in.Added[v];
-    vtkTetReferenceScene::Source& source = sources[v];
-    source.Input = volume->GetInput();
-    source.Property = volume->GetPropertyInForce();
-    volume->GetMatrixInForce(source.Matrix);
-    source.ScalarMode = volume->GetScalarMode();
-    source.ArrayAccessMode = volume->GetArrayAccessMode();
-    source.ArrayId = volume->GetArrayId();
-    source.ArrayName = volume->GetArrayName();
-    source.VectorMode = volume->GetVectorMode();
-    source.VectorComponent = volume->GetVectorComponent();
+    sources.push_back(vtkTetReferenceScene::MakeSource(volume));
   }
   std::string error;
-  if (!in.Scene.Prepare(sources, this->Input ? 1 : 0, tetrahedra, this->LastPreparationTime, error))
+  if (!in.Scene.Prepare(sources, ownInput ? 1 : 0, tetrahedra, this->LastPreparationTime, error))
   {
     vtkErrorMacro(<< error);
     return 0;
@@ -635,32 +529,13 @@ int vtkTetReferenceRenderer::RenderScene(vtkVolumeProperty* property)
 
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
-  PixelRays rays;
-  rays.Width = this->ImageSize[0];
-  rays.Height = this->ImageSize[1];
-  rays.OffsetX = this->SampleOffset[0];
-  rays.OffsetY = this->SampleOffset[1];
-  rays.Depth = depth;
-  vtkMatrix4x4::DeepCopy(rays.Inverse,
-    this->Camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(rays.Width) / rays.Height, -1.0, 1.0));
-  vtkMatrix4x4::Invert(rays.Inverse, rays.Inverse);
-  rays.SetClippingPlanes(this->ClippingPlanes); // world coordinates: Center is null
-
-  vtkNew<vtkFloatArray> rgbaFloat;
-  vtkNew<vtkDoubleArray> rgbaDouble;
-  vtkDataArray* rgba = this->DoublePrecisionOutput ? static_cast<vtkDataArray*>(rgbaDouble)
-                                                   : static_cast<vtkDataArray*>(rgbaFloat);
-  rgba->SetName("RGBA");
-  rgba->SetNumberOfComponents(4);
-  rgba->SetNumberOfTuples(numPixels);
-  vtkNew<vtkIntArray> counts;
-  counts->SetName("NumberOfTets");
-  counts->SetNumberOfTuples(numPixels);
-  vtkTetReferenceScene::CastRays(scene, rays,
-    this->DoublePrecisionOutput ? nullptr : rgbaFloat->GetPointer(0),
-    this->DoublePrecisionOutput ? rgbaDouble->GetPointer(0) : nullptr, counts->GetPointer(0));
-  this->StoreOutput(rgba, counts);
+  PixelRays rays; // in world coordinates: no centre
+  rays.SetUp(this->Camera, this->ImageSize[0], this->ImageSize[1], this->SampleOffset, depth,
+    nullptr, this->ClippingPlanes);
+  OutputArrays output(this->DoublePrecisionOutput != 0, numPixels);
+  vtkTetReferenceScene::CastRays(
+    scene, rays, output.Float(), output.Double(), output.Counts->GetPointer(0));
+  this->StoreOutput(output.RGBA, output.Counts);
   timer->StopTimer();
   this->LastRayCastTime = timer->GetElapsedTime();
   return 1;
@@ -772,17 +647,10 @@ int vtkTetReferenceRenderer::CompareImages(vtkImageData* a, vtkImageData* b, dou
 void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Input: " << this->Input << "\n";
-  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
-  os << indent << "ArrayAccessMode: " << this->ArrayAccessMode << "\n";
-  os << indent << "ArrayId: " << this->ArrayId << "\n";
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
-  os << indent << "VectorMode: " << this->VectorMode << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
-  os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
+  os << indent << "Own volume (input, property, matrix, scalars):\n";
+  this->Own->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Camera: " << this->Camera << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " x " << this->ImageSize[1] << "\n";
-  os << indent << "Volume: " << this->Volume << "\n";
   os << indent << "OpaqueDepth: " << this->OpaqueDepth << "\n";
   os << indent << "ClippingPlanes: " << this->ClippingPlanes << "\n";
   os << indent << "Lights: " << this->Lights << "\n";
@@ -803,8 +671,6 @@ void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "LastPreparationTime: " << this->LastPreparationTime << "\n";
   os << indent << "LastRayCastTime: " << this->LastRayCastTime << "\n";
-  os << indent << "VolumeMatrix:\n";
-  this->VolumeMatrix->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Integrator:\n";
   this->Integrator->PrintSelf(os, indent.GetNextIndent());
 }

@@ -77,6 +77,7 @@
 #define vtkTetReferenceRenderer_h
 
 #include "vtkObject.h"
+#include "vtkTetReferenceVolume.h"          // For the inline forwarders to the own volume
 #include "vtkTiledRayCastReferenceModule.h" // For export macro
 
 class vtkCamera;
@@ -88,7 +89,6 @@ class vtkImageData;
 class vtkLightCollection;
 class vtkMatrix4x4;
 class vtkTetRayIntegrator;
-class vtkTetReferenceVolume;
 class vtkVolume;
 class vtkVolumeProperty;
 
@@ -99,12 +99,18 @@ public:
   vtkTypeMacro(vtkTetReferenceRenderer, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The latest of the renderer's own modification time and its own volume's (input, property,
+   * matrix and scalar selection are set there).
+   */
+  vtkMTimeType GetMTime() override;
+
   ///@{
   /**
    * The mesh to render.
    */
-  void SetInputData(vtkDataSet* input);
-  vtkDataSet* GetInput();
+  void SetInputData(vtkDataSet* input) { this->Own->SetInputData(input); }
+  vtkDataSet* GetInput() { return this->Own->GetInput(); }
   ///@}
 
   ///@{
@@ -113,19 +119,19 @@ public:
    * USE_POINT_DATA, USE_CELL_DATA, USE_POINT_FIELD_DATA, USE_CELL_FIELD_DATA), and, for the
    * field data modes, the array by id or by name.
    */
-  vtkSetMacro(ScalarMode, int);
-  vtkGetMacro(ScalarMode, int);
+  void SetScalarMode(int mode) { this->Own->SetScalarMode(mode); }
+  int GetScalarMode() { return this->Own->GetScalarMode(); }
   void SetScalarModeToDefault();
   void SetScalarModeToUsePointData();
   void SetScalarModeToUseCellData();
   void SetScalarModeToUsePointFieldData();
   void SetScalarModeToUseCellFieldData();
-  void SelectScalarArray(int arrayNum);
-  void SelectScalarArray(const char* arrayName);
-  vtkSetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayId, int);
-  vtkGetStringMacro(ArrayName);
+  void SelectScalarArray(int arrayNum) { this->Own->SelectScalarArray(arrayNum); }
+  void SelectScalarArray(const char* arrayName) { this->Own->SelectScalarArray(arrayName); }
+  void SetArrayAccessMode(int mode) { this->Own->SetArrayAccessMode(mode); }
+  int GetArrayAccessMode() { return this->Own->GetArrayAccessMode(); }
+  int GetArrayId() { return this->Own->GetArrayId(); }
+  char* GetArrayName() { return this->Own->GetArrayName(); }
   ///@}
 
   ///@{
@@ -136,13 +142,13 @@ public:
    * do; vtkScalarsToColors::COMPONENT (component VectorComponent) or MAGNITUDE override it.
    * Components the property would blend or read as dependent are refused with an error.
    */
-  vtkSetMacro(VectorMode, int);
-  vtkGetMacro(VectorMode, int);
+  void SetVectorMode(int mode) { this->Own->SetVectorMode(mode); }
+  int GetVectorMode() { return this->Own->GetVectorMode(); }
   void SetVectorModeToDefault();
   void SetVectorModeToComponent();
   void SetVectorModeToMagnitude();
-  vtkSetMacro(VectorComponent, int);
-  vtkGetMacro(VectorComponent, int);
+  void SetVectorComponent(int component) { this->Own->SetVectorComponent(component); }
+  int GetVectorComponent() { return this->Own->GetVectorComponent(); }
   ///@}
 
   ///@{
@@ -150,8 +156,8 @@ public:
    * The volume property (its first component is rendered). When none is set, the property of
    * the volume given with SetVolume() is used.
    */
-  void SetVolumeProperty(vtkVolumeProperty* property);
-  vtkGetObjectMacro(VolumeProperty, vtkVolumeProperty);
+  void SetVolumeProperty(vtkVolumeProperty* property) { this->Own->SetVolumeProperty(property); }
+  vtkVolumeProperty* GetVolumeProperty() { return this->Own->GetVolumeProperty(); }
   ///@}
 
   ///@{
@@ -193,10 +199,10 @@ public:
    * The model-to-world matrix of the volume (copied; nullptr means identity, the default).
    * SetVolume() takes the matrix of a vtkVolume at each Render() instead, and wins over this.
    */
-  void SetVolumeMatrix(vtkMatrix4x4* matrix);
-  vtkMatrix4x4* GetVolumeMatrix();
-  void SetVolume(vtkVolume* volume);
-  vtkGetObjectMacro(Volume, vtkVolume);
+  void SetVolumeMatrix(vtkMatrix4x4* matrix) { this->Own->SetMatrix(matrix); }
+  vtkMatrix4x4* GetVolumeMatrix() { return this->Own->GetMatrix(); }
+  void SetVolume(vtkVolume* volume) { this->Own->SetVolume(volume); }
+  vtkVolume* GetVolume() { return this->Own->GetVolume(); }
   ///@}
 
   ///@{
@@ -354,18 +360,11 @@ protected:
   vtkTetReferenceRenderer();
   ~vtkTetReferenceRenderer() override;
 
-  vtkDataSet* Input;
-  int ScalarMode;
-  int ArrayAccessMode;
-  int ArrayId;
-  char* ArrayName;
-  int VectorMode;
-  int VectorComponent;
-  vtkVolumeProperty* VolumeProperty;
+  // The renderer's own input, property, volume, matrix and scalar selection: volume 0 of a
+  // scene, rendered by the same code as the added volumes.
+  vtkTetReferenceVolume* Own;
   vtkCamera* Camera;
   int ImageSize[2];
-  vtkMatrix4x4* VolumeMatrix;
-  vtkVolume* Volume;
   vtkFloatArray* OpaqueDepth;
   vtkPlaneCollection* ClippingPlanes = nullptr;
   vtkLightCollection* Lights = nullptr;
@@ -386,8 +385,6 @@ protected:
 private:
   vtkTetReferenceRenderer(const vtkTetReferenceRenderer&) = delete;
   void operator=(const vtkTetReferenceRenderer&) = delete;
-
-  vtkSetStringMacro(ArrayName);
 
   // The steps of Render() before the rays are cast (see vtkTetReferenceRenderer.cxx for the
   // private classes that do the work).

@@ -21,6 +21,7 @@
 #include "vtkSMPTools.h"
 #include "vtkTetRayIntegrator.h"
 #include "vtkTetReferencePixelRays.h"
+#include "vtkTetReferenceVolume.h"
 #include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkVolumeProperty.h"
@@ -46,6 +47,22 @@ vtkTetReferenceScene::vtkTetReferenceScene()
 
 //------------------------------------------------------------------------------
 vtkTetReferenceScene::~vtkTetReferenceScene() = default;
+
+//------------------------------------------------------------------------------
+vtkTetReferenceScene::Source vtkTetReferenceScene::MakeSource(vtkTetReferenceVolume* volume)
+{
+  Source source;
+  source.Input = volume->GetInput();
+  source.Property = volume->GetPropertyInForce();
+  volume->GetMatrixInForce(source.Matrix);
+  source.ScalarMode = volume->GetScalarMode();
+  source.ArrayAccessMode = volume->GetArrayAccessMode();
+  source.ArrayId = volume->GetArrayId();
+  source.ArrayName = volume->GetArrayName();
+  source.VectorMode = volume->GetVectorMode();
+  source.VectorComponent = volume->GetVectorComponent();
+  return source;
+}
 
 //------------------------------------------------------------------------------
 bool vtkTetReferenceScene::PrepareMesh(const Source& source, vtkTetReferenceMesh& mesh,

@@ -38,6 +38,7 @@ class vtkDataSet;
 class vtkFloatArray;
 class vtkTetRayIntegrator;
 class vtkTetReferencePixelRays;
+class vtkTetReferenceVolume;
 class vtkVolumeProperty;
 
 class vtkTetReferenceScene
@@ -61,6 +62,11 @@ public:
     int VectorMode = -1;
     int VectorComponent = 0;
   };
+
+  /**
+   * What `volume` renders: its input, the property and matrix in force, its scalar selection.
+   */
+  static Source MakeSource(vtkTetReferenceVolume* volume);
 
   /**
    * The mesh of `source`, prepared again only when what it depends on changed (`rebuilt` says

@@ -46,16 +46,8 @@ void vtkTetReferenceVolume::SetInputData(vtkDataSet* input)
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceVolume::SetVolumeProperty(vtkVolumeProperty* property)
-{
-  vtkSetObjectBodyMacro(VolumeProperty, vtkVolumeProperty, property);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceVolume::SetVolume(vtkVolume* volume)
-{
-  vtkSetObjectBodyMacro(Volume, vtkVolume, volume);
-}
+vtkCxxSetObjectMacro(vtkTetReferenceVolume, VolumeProperty, vtkVolumeProperty);
+vtkCxxSetObjectMacro(vtkTetReferenceVolume, Volume, vtkVolume);
 
 //------------------------------------------------------------------------------
 void vtkTetReferenceVolume::SetMatrix(vtkMatrix4x4* matrix)

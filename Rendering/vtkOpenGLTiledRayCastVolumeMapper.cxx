@@ -10,21 +10,17 @@
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 
-#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLActor.h"
 #include "vtkOpenGLError.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
-#include "vtkPropCollection.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
-#include "vtkTetMesh.h"
-#include "vtkTetMeshPaperLayout.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastContext.h"
 #include "vtkTiledRayCastDebugEvent.h"
 #include "vtkTiledRayCastDeferredDraw.h"
 #include "vtkTiledRayCastFragmentPipeline.h"
@@ -41,7 +37,9 @@
 #include "vtkTiledRayCastShaderComposition.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
+#include "vtkTiledRayCastUniforms.h"
 #include "vtkTiledRayCastVisibleMesh.h"
+#include "vtkTiledRayCastWarnings.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
@@ -50,10 +48,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
-#include <limits>
-#include <sstream>
 #include <string>
-#include <vector>
 
 // vtkOpenGLCheckErrorMacro (compiled where NDEBUG is not defined) reports with vtkErrorMacro,
 // which needs a vtkObject's `this`: the internals report through their mapper.
@@ -69,47 +64,19 @@ vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
 
 namespace
 {
-// The one check of the context's OpenGL version, for IsSupported() and CheckContext(): the
-// version line of the fragment pipeline's programs (their //TRC::Version tag), or null where the
-// context cannot run them. They need explicit output locations (several render targets, written
-// by name): GLSL 3.30, or 1.50 with GL_ARB_explicit_attrib_location. The programs bring this line
-// themselves rather than VTK's //VTK::System::Dec, because VTK 9.1's vtkOpenGLShaderCache
-// replaces that tag with "#version 150" whatever the context (no explicit locations), and the
-// compute pipeline compiles the same fragment shaders as GLSL 4.30 (storage buffers and image
-// atomics); for the same reason their outputs are declared here, not by //VTK::Output::Dec,
-// which only declares what gl_FragData[n] writes.
-const char* FragmentPipelineVersion(vtkOpenGLRenderWindow* window)
-{
-  int major = 0, minor = 0;
-  window->GetOpenGLVersion(major, minor);
-  if (major > 3 || (major == 3 && minor >= 3))
-  {
-    return "#version 330 core\n";
-  }
-  if (major == 3 && minor == 2 && GLEW_ARB_explicit_attrib_location)
-  {
-    return "#version 150\n"
-           "#extension GL_ARB_explicit_attrib_location : require\n";
-  }
-  return nullptr;
-}
-
 // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
 // place: the next layer must then have a larger key than the last (both pipelines' peeling).
 const float PeelEpsilon = 2e-6f;
 
-void ActivateAll(const std::vector<vtkTextureObject*>& textures, bool activate)
+void Activate(vtkTextureObject* texture, bool activate)
 {
-  for (vtkTextureObject* t : textures)
+  if (activate)
   {
-    if (activate)
-    {
-      t->Activate();
-    }
-    else
-    {
-      t->Deactivate();
-    }
+    texture->Activate();
+  }
+  else
+  {
+    texture->Deactivate();
   }
 }
 
@@ -123,6 +90,7 @@ public:
     : Self(self)
     , Deferred(self)
     , Mesh(self)
+    , Warnings(self)
   {
   }
 
@@ -132,14 +100,7 @@ public:
   vtkTiledRayCastDeferredDraw Deferred;
 
   // Context: checked once per window.
-  vtkOpenGLRenderWindow* CheckedWindow = nullptr;
-  bool ContextUsable = false;
-  std::string ContextError;
-  std::string VersionHeader;
-  int MaxTextureSize = 0;
-  int MaxTextureBufferSize = 0;
-  int Max3DTextureSize = 0;
-  bool ComputeSupported = false; // OpenGL 4.3
+  vtkTiledRayCastContext Context;
 
   // The pipeline of this frame: compute or fragment.
   bool UseCompute = false;
@@ -169,16 +130,9 @@ public:
   // GPU timers.
   vtkTiledRayCastPhaseTimers Timers;
 
-  // Warnings given once.
-  bool WarnedTranslucentGeometry = false;
-  bool WarnedBlendMode = false;
+  // Warnings given once, errors once until they change.
+  vtkTiledRayCastWarnings Warnings;
   bool WarnedClippingPlanes = false;
-  bool WarnedPositionalLights = false;
-  bool WarnedIgnoredLights = false;
-  bool WarnedShadedCellScalars = false;
-  bool WarnedGradientOpacity = false;
-  bool WarnedStoppedRays = false;
-  std::string LastError;
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
@@ -186,13 +140,30 @@ public:
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   int Viewport[4] = { 0, 0, 0, 0 };
 
-  void ReportError(const std::string& message);
+  // The uniforms, read from the members above when the pipelines set up their programs.
+  vtkTiledRayCastUniforms Uniforms{ { this->Self, &this->Geometry, this->ImageSize, this->Viewport,
+    &this->OpaqueDepth, &this->Mesh, &this->MeshTextures, &this->VisibleMesh, &this->Integration,
+    &this->Lighting, &this->GradientOpacity } };
+
+  void ReportError(const std::string& message) { this->Warnings.ReportError(message); }
+  // `ok`, after reporting `error` where it is false (the parts return false with a message).
+  bool Reported(bool ok, const std::string& error)
+  {
+    if (!ok)
+    {
+      this->ReportError(error);
+    }
+    return ok;
+  }
   // The integration the shaders do (vtkTiledRayCastIntegration::GetMode).
   int IntegrationMode() const { return this->Integration.GetMode(this->Self); }
   // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
   // GradientOpacity).
-  void WarnLighting();
-  bool CheckContext(vtkOpenGLRenderWindow* window);
+  void WarnLighting()
+  {
+    this->Warnings.WarnLighting(this->Lighting, this->GradientOpacity, this->Mesh.HasCellScalars);
+  }
+  bool CheckContext(vtkOpenGLRenderWindow* window) { return this->Context.Check(window); }
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
@@ -204,13 +175,18 @@ public:
 
   void ActivateTextures(bool activate);
   bool ChoosePipeline();
-  void SetFrameUniforms(vtkShaderProgram* program) override;
-  void SetMeshUniforms(vtkShaderProgram* program) override;
-  // Uniforms of the boundary-face passes: exact coverage of pixel centres (see the vertex shader).
-  void SetCoverageUniforms(vtkShaderProgram* program) override;
-  void SetIntegrationUniforms(vtkShaderProgram* program) override;
-  void SetBlendUniforms(vtkShaderProgram* program);
-  void SetShadingUniforms(vtkShaderProgram* program);
+  // vtkTiledRayCastProgramSetup, for the pipelines: vtkTiledRayCastUniforms sets them.
+  void SetFrameUniforms(vtkShaderProgram* p) override { this->Uniforms.SetFrameUniforms(p); }
+  void SetMeshUniforms(vtkShaderProgram* p) override { this->Uniforms.SetMeshUniforms(p); }
+  void SetCoverageUniforms(vtkShaderProgram* p) override { this->Uniforms.SetCoverageUniforms(p); }
+  void SetIntegrationUniforms(vtkShaderProgram* p) override
+  {
+    this->Uniforms.SetIntegrationUniforms(p);
+  }
+  void SetSampleScaleUniforms(vtkShaderProgram* p) override
+  {
+    this->Uniforms.SetSampleScaleUniforms(p);
+  }
   int GetMaximumSteps() const
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
@@ -220,12 +196,16 @@ public:
   // has pushed the framebuffer bindings; both pop them before compositing).
   bool RenderCompute(vtkOpenGLRenderWindow* window);
   bool RenderFragment(vtkOpenGLRenderWindow* window);
-  // Compositing: rays per viewport pixel along x and y (1 at an image sample distance of 1).
-  void SetSampleScaleUniforms(vtkShaderProgram* program) override;
 
   // The steps of Render.
-  void WarnTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol);
-  bool CheckBlendMode();
+  void WarnTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol)
+  {
+    this->Warnings.WarnTranslucentGeometry(ren, vol);
+  }
+  bool CheckBlendMode()
+  {
+    return this->Warnings.CheckBlendMode(this->Self->BlendMode, this->UseCompute);
+  }
   // The CPU work of a frame (only what changed) and the GPU resources it needs; false when
   // nothing is drawn. Sets the number of rays along x and y.
   bool PrepareFrame(vtkRenderer* ren, vtkVolume* vol, vtkDataObject* input,
@@ -241,25 +221,26 @@ public:
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
 {
   const int requested = this->Self->GetPipeline();
-  if (requested == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE && !this->ComputeSupported)
+  if (requested == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE && !this->Context.ComputeSupported)
   {
     this->ReportError("The compute pipeline needs OpenGL 4.3, which this context lacks. Nothing "
                       "is drawn (the automatic or the fragment pipeline would draw).");
     return false;
   }
   const bool compute = requested == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE ||
-    (requested == vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE && this->ComputeSupported);
-  if (compute != this->UseCompute && this->CheckedWindow)
+    (requested == vtkTiledRayCastVolumeMapper::AUTOMATIC_PIPELINE &&
+      this->Context.ComputeSupported);
+  if (compute != this->UseCompute && this->Context.Window)
   {
     this->Composition.Reset();
     // The other pipeline's per-pixel memory is no longer needed.
     if (compute)
     {
-      this->Fragment.ReleaseTargets(this->CheckedWindow);
+      this->Fragment.ReleaseTargets(this->Context.Window);
     }
     else
     {
-      this->Compute.ReleaseGraphicsResources(this->CheckedWindow);
+      this->Compute.ReleaseGraphicsResources(this->Context.Window);
     }
   }
   this->UseCompute = compute;
@@ -322,94 +303,14 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
 }
 
 //------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReportError(const std::string& message)
-{
-  // The same error every frame would flood the output: say it once until it changes.
-  if (message != this->LastError)
-  {
-    vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-    vtkErrorWithObjectMacro(self, << message);
-    this->LastError = message;
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnLighting()
-{
-  const vtkTiledRayCastLighting& lighting = this->Lighting;
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  if (lighting.NumberOfPositionalLights > 0 && !this->WarnedPositionalLights)
-  {
-    vtkWarningWithObjectMacro(self,
-      "Shading lights every light as a directional one: a "
-      "positional light shines from its position towards its focal "
-      "point, without attenuation or cone.");
-    this->WarnedPositionalLights = true;
-  }
-  if (lighting.NumberOfIgnoredLights > 0 && !this->WarnedIgnoredLights)
-  {
-    vtkWarningWithObjectMacro(self,
-      "Shading uses the first " << vtkTiledRayCastLighting::MaximumLights << " lights that are on; "
-                                << lighting.NumberOfIgnoredLights << " more are ignored.");
-    this->WarnedIgnoredLights = true;
-  }
-  if (this->GradientOpacity.Approximated && !this->WarnedGradientOpacity)
-  {
-    vtkWarningWithObjectMacro(self,
-      "The gradient opacity function has intervals of another midpoint or sharpness than 0.5 and "
-      "0, or more than "
-        << vtkTiledRayCastGradientOpacityNodes::MaximumNodes
-        << " nodes: it is sampled (linear between samples).");
-    this->WarnedGradientOpacity = true;
-  }
-  if (lighting.Enabled && this->Mesh.HasCellScalars && !this->WarnedShadedCellScalars)
-  {
-    vtkWarningWithObjectMacro(self,
-      "Shading cell scalars: they are constant per cell, their "
-      "gradient is zero, so only the ambient term lights them.");
-    this->WarnedShadedCellScalars = true;
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckContext(vtkOpenGLRenderWindow* window)
-{
-  if (window == this->CheckedWindow)
-  {
-    return this->ContextUsable;
-  }
-  this->CheckedWindow = window;
-  this->ContextUsable = false;
-  const char* version = FragmentPipelineVersion(window);
-  if (!version)
-  {
-    int major = 0, minor = 0;
-    window->GetOpenGLVersion(major, minor);
-    std::ostringstream msg;
-    msg << "The OpenGL context (version " << major << "." << minor
-        << ") lacks what tiled ray casting needs: OpenGL 3.3, or 3.2 with "
-           "GL_ARB_explicit_attrib_location. Nothing is drawn.";
-    this->ContextError = msg.str();
-    return false;
-  }
-  this->VersionHeader = version;
-  window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_SIZE, &this->MaxTextureSize);
-  window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &this->MaxTextureBufferSize);
-  window->GetState()->vtkglGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &this->Max3DTextureSize);
-  this->ComputeSupported = vtkTiledRayCastComputeShader::IsSupported(window);
-  this->ContextUsable = true;
-  return true;
-}
-
-//------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
   std::string error;
-  if (!this->Mesh.Update(
-        dataObject, property, this->MaxTextureSize, this->MaxTextureBufferSize, error))
+  if (!this->Reported(this->Mesh.Update(dataObject, property, this->Context.MaxTextureSize,
+                        this->Context.MaxTextureBufferSize, error),
+        error))
   {
-    this->ReportError(error);
     return false;
   }
   if (this->Mesh.TakeNewLayout())
@@ -424,10 +325,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 {
   vtkIdType uploaded = 0;
   std::string error;
-  if (!this->MeshTextures.Update(
-        window, this->Mesh.GetLayout(), this->Mesh.GetMesh(), uploaded, error))
+  if (!this->Reported(this->MeshTextures.Update(
+                        window, this->Mesh.GetLayout(), this->Mesh.GetMesh(), uploaded, error),
+        error))
   {
-    this->ReportError(error);
     return false;
   }
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
@@ -447,16 +348,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   frame.LongestEdge = this->Mesh.LongestEdge;
   frame.TypicalEdge = this->Mesh.TypicalEdge;
   frame.ObjectToWorldNorm = this->Geometry.ObjectToWorldNorm;
-  frame.MaxTextureSize = this->MaxTextureSize;
-  frame.Max3DTextureSize = this->Max3DTextureSize;
+  frame.MaxTextureSize = this->Context.MaxTextureSize;
+  frame.Max3DTextureSize = this->Context.Max3DTextureSize;
   frame.WaitForChoice = this->Self->SynchronousStatistics;
   std::string error;
-  if (!this->Integration.Update(frame, property, error))
-  {
-    this->ReportError(error);
-    return false;
-  }
-  return true;
+  return this->Reported(this->Integration.Update(frame, property, error), error);
 }
 
 //------------------------------------------------------------------------------
@@ -508,10 +404,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
   std::string error;
   const bool built = this->UseCompute
     ? this->Compute.UpdatePrograms(window, common, error)
-    : this->Fragment.UpdatePrograms(window, this->VersionHeader, common, error);
-  if (!built)
+    : this->Fragment.UpdatePrograms(window, this->Context.VersionHeader, common, error);
+  if (!this->Reported(built, error))
   {
-    this->ReportError(error);
     return false;
   }
   this->Composition.Built(inputs);
@@ -524,23 +419,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTargets(
 {
   this->ImageSize[0] = width;
   this->ImageSize[1] = height;
-  if (this->UseCompute)
-  {
-    std::string error;
-    if (!this->Compute.UpdateTargets(window, width, height, error))
-    {
-      this->ReportError(error);
-      return false;
-    }
-    return true;
-  }
   std::string error;
-  if (!this->Fragment.UpdateTargets(window, width, height, error))
-  {
-    this->ReportError(error);
-    return false;
-  }
-  return true;
+  return this->Reported(this->UseCompute
+      ? this->Compute.UpdateTargets(window, width, height, error)
+      : this->Fragment.UpdateTargets(window, width, height, error),
+    error);
 }
 
 //------------------------------------------------------------------------------
@@ -549,14 +432,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CaptureOpaqueDepth(
 {
   std::string error;
   this->Self->Statistics->SetSceneDepthCopied(this->SceneDepth);
-  if (this->SceneDepth
-      ? !this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error)
-      : !this->OpaqueDepth.SetFar(window, this->ImageSize, error))
-  {
-    this->ReportError(error);
-    return false;
-  }
-  return true;
+  return this->Reported(this->SceneDepth
+      ? this->OpaqueDepth.Capture(window, this->Viewport, width, height, this->ImageSize, error)
+      : this->OpaqueDepth.SetFar(window, this->ImageSize, error),
+    error);
 }
 
 //------------------------------------------------------------------------------
@@ -575,152 +454,25 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
 {
   // The mesh's textures take the first units, then the others in this order.
   this->MeshTextures.ActivateTextures(activate);
-  std::vector<vtkTextureObject*> textures;
-  textures.push_back(this->OpaqueDepth.GetTexture());
+  Activate(this->OpaqueDepth.GetTexture(), activate);
   if (this->UseCompute)
   {
-    textures.push_back(this->Compute.GetColorTexture());
+    Activate(this->Compute.GetColorTexture(), activate);
   }
   else
   {
     // The fragment pipeline's targets take the units after these.
-    ActivateAll(textures, activate);
-    textures.clear();
     this->Fragment.ActivateTextures(activate);
   }
-  ActivateAll(textures, activate);
   this->Integration.ActivateTextures(this->IntegrationMode(), activate);
   this->VisibleMesh.ActivateTextures(activate);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetFrameUniforms(vtkShaderProgram* p)
-{
-  const vtkTiledRayCastFrameGeometry& g = this->Geometry;
-  const float viewport[2] = { static_cast<float>(this->ImageSize[0]),
-    static_cast<float>(this->ImageSize[1]) };
-  p->SetUniform2f("in_viewportSize", viewport);
-  p->SetUniform3f("in_rayOrigin0", g.RayOrigin[0]);
-  p->SetUniform3f("in_rayOriginX", g.RayOrigin[1]);
-  p->SetUniform3f("in_rayOriginY", g.RayOrigin[2]);
-  p->SetUniform3f("in_rayDir0", g.RayDir[0]);
-  p->SetUniform3f("in_rayDirX", g.RayDir[1]);
-  p->SetUniform3f("in_rayDirY", g.RayDir[2]);
-  p->SetUniform3f("in_wNear", g.WNear);
-  p->SetUniform3f("in_wFar", g.WFar);
-  p->SetUniformf("in_lambdaNear", g.LambdaNear);
-  p->SetUniformMatrix3x3("in_objectToWorld", const_cast<float*>(g.ObjectToWorld));
-  p->SetUniformMatrix4x4("in_objectToClip", const_cast<float*>(g.ObjectToClip));
-  p->SetUniform4f("in_nearPlane", g.NearPlane);
-  p->SetUniformi("in_numberOfClippingPlanes", g.NumberOfClippingPlanes);
-  if (g.NumberOfClippingPlanes > 0)
-  {
-    p->SetUniform4fv("in_clippingPlanes", g.NumberOfClippingPlanes, g.ClippingPlanes);
-  }
-  p->SetUniformi("in_opaqueDepth", this->OpaqueDepth.GetTexture()->GetTextureUnit());
-  p->SetUniformf(
-    "in_earlyTerminationOpacity", static_cast<float>(this->Self->GetEarlyRayTerminationOpacity()));
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetCoverageUniforms(vtkShaderProgram* p)
-{
-  // Pixel centres are tested against the faces' corners in float pixel coordinates, whose
-  // rounding grows with the viewport: the tolerance covers it (a few units in the last place).
-  // The dilation covers the rasteriser's snapping of corners (1/256 px on current GPUs and on
-  // llvmpipe) and the tolerance, with a margin.
-  const float extent = static_cast<float>(std::max(this->ImageSize[0], this->ImageSize[1]));
-  const float tolerance = 8.0f * extent * std::numeric_limits<float>::epsilon();
-  p->SetUniformf("in_coverageTolerance", tolerance);
-  p->SetUniformf("in_coverageDilation", 1.0f / 64.0f + tolerance);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetMeshUniforms(vtkShaderProgram* p)
-{
-  this->MeshTextures.SetUniforms(p);
-  this->VisibleMesh.SetUniforms(p);
-  if (auto* paper = vtkTetMeshPaperLayout::SafeDownCast(this->Mesh.GetLayout()))
-  {
-    p->SetUniformi("in_paperWidth", paper->GetTextureWidth());
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetBlendUniforms(vtkShaderProgram* p)
-{
-  // Scalars and transfer-function nodes are shifted on the GPU (vtkTetMesh::GetScalarShift).
-  const double shift = vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange);
-  const float range[2] = { static_cast<float>(this->Mesh.ScalarRange[0] - shift),
-    static_cast<float>(this->Mesh.ScalarRange[1] - shift) };
-  const double* average = this->Self->GetAverageIPScalarRange();
-  const float averageRange[2] = { static_cast<float>(std::max(average[0] - shift, -3.0e38)),
-    static_cast<float>(std::min(average[1] - shift, 3.0e38)) };
-  p->SetUniformi("in_blendMode", this->Self->GetBlendMode());
-  p->SetUniform2f("in_blendScalarRange", range);
-  p->SetUniform2f("in_averageRange", averageRange);
-  // The unit distance the node list's attenuations were divided by: opacity = tau * distance.
-  p->SetUniformf("in_opacityUnitDistance",
-    static_cast<float>(this->Integration.GetTransferFunction()->GetUnitDistance()));
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetShadingUniforms(vtkShaderProgram* p)
-{
-  const vtkTiledRayCastLighting& lighting = this->Lighting;
-  const vtkTiledRayCastGradientOpacityNodes& gradientOpacity = this->GradientOpacity;
-  if (lighting.Enabled || gradientOpacity.Enabled)
-  {
-    p->SetUniformMatrix3x3("in_gradientToWorld", const_cast<float*>(lighting.GradientToWorld));
-  }
-  if (gradientOpacity.Enabled)
-  {
-    p->SetUniformi("in_gradientOpacityNodes", gradientOpacity.NumberOfNodes);
-    p->SetUniform2fv("in_gradientOpacity", gradientOpacity.NumberOfNodes, gradientOpacity.Nodes[0]);
-    p->SetUniformi("in_gradientOpacityClamping", gradientOpacity.Clamping);
-  }
-  if (!lighting.Enabled)
-  {
-    return;
-  }
-  p->SetUniform4f("in_material", lighting.Material);
-  p->SetUniformi("in_twoSidedLighting", lighting.TwoSided);
-  p->SetUniformi("in_numberOfLights", lighting.NumberOfLights);
-  if (lighting.NumberOfLights > 0)
-  {
-    p->SetUniform3fv("in_lightToLight", lighting.NumberOfLights, lighting.ToLight);
-    p->SetUniform3fv("in_lightDiffuse", lighting.NumberOfLights, lighting.Diffuse);
-    p->SetUniform3fv("in_lightSpecular", lighting.NumberOfLights, lighting.Specular);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetIntegrationUniforms(vtkShaderProgram* p)
-{
-  const int mode = this->IntegrationMode();
-  this->Integration.SetUniforms(p, mode, vtkTetMesh::ComputeScalarShift(this->Mesh.ScalarRange));
-  if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
-    this->Self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
-  {
-    this->SetBlendUniforms(p);
-  }
-  this->SetShadingUniforms(p);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::SetSampleScaleUniforms(vtkShaderProgram* p)
-{
-  const float scale[2] = { static_cast<float>(this->ImageSize[0]) / this->Viewport[2],
-    static_cast<float>(this->ImageSize[1]) / this->Viewport[3] };
-  p->SetUniform2f("in_sampleScale", scale);
-  p->SetUniform2i("in_imageSize", this->ImageSize);
 }
 
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(vtkWindow* window)
 {
   this->Compute.ReleaseGraphicsResources(window);
-  this->MeshTextures.ReleaseGraphicsResources(this->CheckedWindow);
+  this->MeshTextures.ReleaseGraphicsResources(this->Context.Window);
   this->VisibleMesh.ReleaseGraphicsResources(window);
   this->Integration.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
@@ -729,7 +481,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->Composition.Reset();
   this->Timers.ReleaseGraphicsResources();
   this->ImageSize[0] = this->ImageSize[1] = 0;
-  this->CheckedWindow = nullptr;
+  this->Context.Reset();
 }
 
 //------------------------------------------------------------------------------
@@ -770,7 +522,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::ReleaseGraphicsResources(vtkWindow* wind
 bool vtkOpenGLTiledRayCastVolumeMapper::IsSupported(vtkRenderWindow* window)
 {
   vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
-  return gl && FragmentPipelineVersion(gl) != nullptr;
+  return gl && vtkTiledRayCastContext::FragmentPipelineVersion(gl) != nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -787,58 +539,6 @@ int vtkOpenGLTiledRayCastVolumeMapper::IsRenderSupported(
     return vtkTiledRayCastComputeShader::IsSupported(gl) ? 1 : 0;
   }
   return vtkOpenGLTiledRayCastVolumeMapper::IsSupported(window) ? 1 : 0;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnTranslucentGeometry(
-  vtkRenderer* ren, vtkVolume* vol)
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
-  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
-  // it, the volume's property keys carry the peeling pass's depth-mask override).
-  vtkInformation* keys = vol->GetPropertyKeys();
-  bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
-  vtkPropCollection* props = ren->GetViewProps();
-  vtkCollectionSimpleIterator it;
-  props->InitTraversal(it);
-  for (vtkProp* prop = props->GetNextProp(it);
-       prop && !translucentGeometry && !this->WarnedTranslucentGeometry;
-       prop = props->GetNextProp(it))
-  {
-    translucentGeometry = prop != vol && prop->GetVisibility() && !vtkVolume::SafeDownCast(prop) &&
-      prop->HasTranslucentPolygonalGeometry();
-  }
-  if (translucentGeometry && !this->WarnedTranslucentGeometry)
-  {
-    vtkWarningWithObjectMacro(self,
-      "Translucent polygonal geometry in the same renderer is not composited "
-      "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
-      "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
-      "render it in another renderer.");
-    this->WarnedTranslucentGeometry = true;
-  }
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CheckBlendMode()
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  if (self->BlendMode < vtkVolumeMapper::COMPOSITE_BLEND ||
-    self->BlendMode > vtkVolumeMapper::ADDITIVE_BLEND)
-  {
-    this->ReportError("Blend mode " + std::to_string(self->BlendMode) +
-      " is not supported (composite, maximum, minimum and average intensity, additive are). "
-      "Nothing is drawn.");
-    return false;
-  }
-  if (self->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND && !this->UseCompute)
-  {
-    this->ReportError("Blend modes other than composite need the compute pipeline (OpenGL 4.3). "
-                      "Nothing is drawn.");
-    return false;
-  }
-  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -887,7 +587,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   {
     return false;
   }
-  this->LastError.clear();
+  this->Warnings.ClearError();
   this->ReadTimers(self->SynchronousStatistics);
   return true;
 }
@@ -957,26 +657,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawFrame(
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnAfterFrame()
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkTiledRayCastStatistics* stats = self->Statistics;
-  if (this->UseCompute && this->Compute.GetNumberOfRaysStopped() > 0 && !this->WarnedStoppedRays)
+  // Only the compute pipeline stops rays or misses layers.
+  if (this->UseCompute)
   {
-    vtkWarningWithObjectMacro(
-      self, << this->Compute.GetNumberOfRaysStopped()
-            << " rays reached the bound of steps in one boundary layer and were "
-               "stopped; the mesh's neighbour links may loop.");
-    this->WarnedStoppedRays = true;
-  }
-  const vtkIdType incomplete = this->UseCompute ? this->Compute.TakeNumberOfRaysIncomplete() : 0;
-  if (incomplete > 0)
-  {
-    // Every time: each is a frame drawn with layers missing, which the next frames are not.
-    vtkWarningWithObjectMacro(
-      self, << incomplete << " rays of a recent frame missed boundary layers: the view asked for "
-            << stats->GetNumberOfEntries()
-            << " ray entries, far more than the frames before it, and the entry list "
-               "did not hold them. The list has grown to fit; turn "
-               "SynchronousStatistics on to verify every frame.");
+    this->Warnings.WarnAfterFrame(this->Compute.GetNumberOfRaysStopped(),
+      this->Compute.TakeNumberOfRaysIncomplete(), this->Self->Statistics->GetNumberOfEntries());
   }
 }
 
@@ -997,7 +682,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->ResourceCallback->RegisterGraphicsResources(window);
   if (!impl->CheckContext(window))
   {
-    impl->ReportError(impl->ContextError);
+    impl->ReportError(impl->Context.Error);
     return;
   }
   if (!impl->ChoosePipeline())

@@ -15,6 +15,7 @@
 // mesh: exactly 144 B/tet when the width divides the number of tetrahedra, padding otherwise,
 // errors (not garbage) beyond the texture limits, and the partial updates.
 #include "TetMeshTestUtilities.h"
+#include "TiledRayCastMessageCounter.h"
 
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
@@ -55,14 +56,6 @@ bool Equal(const uint32_t* texel, std::initializer_list<uint32_t> expected)
   }
   return true;
 }
-
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
 
 // Tetrahedron A = (P0, P1, P2, P3), the corner of the cube [0,2]^3 at the origin, and
 // tetrahedron B = (P4, P1, P2, P3) on the other side of the face P1 P2 P3, given inverted
@@ -245,7 +238,7 @@ int TestRealMesh(int argc, char* argv[])
   TRC_CHECK_EMPTY(trc::CheckPaperLayout(mesh, paper));
 
   // Texture limits: a clear error and an invalid layout, never garbage.
-  vtkNew<ErrorCounter> errors;
+  vtkNew<trctest::MessageCounter> errors;
   paper->AddObserver(vtkCommand::ErrorEvent, errors);
   paper->SetTextureWidth(4096);
   paper->SetMaximumTextureSize(8); // 12 rows are needed

@@ -168,29 +168,25 @@ void Deform(vtkUnstructuredGrid* grid, double amount)
   }
   points->Modified();
 }
-}
 
-int TestTetMeshRebuild(int argc, char* argv[])
+vtkSmartPointer<vtkUnstructuredGrid> ReadGrid(int argc, char* argv[], const char* name)
 {
-  char* fileName = vtkTestUtilities::ExpandDataFileName(argc, argv, "Meshes/spx_vistrails.vtu");
+  char* fileName = vtkTestUtilities::ExpandDataFileName(argc, argv, name);
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(fileName);
   delete[] fileName;
   reader->Update();
-  vtkNew<vtkUnstructuredGrid> grid;
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->DeepCopy(reader->GetOutput());
-  TRC_CHECK(grid->GetNumberOfCells() == 12936);
+  return grid;
+}
 
-  Pipeline p;
-  vtkTetMesh* mesh = p.Build(grid);
-  TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
-  TRC_CHECK(p.Compact->GetLastUpdate() == vtkTetMeshLayout::UpdatedAll);
-  TRC_CHECK(p.Paper->GetLastUpdate() == vtkTetMeshLayout::UpdatedAll);
-  TRC_CHECK(mesh->GetReport()->GetUsable());
-
+// Nothing changed, or nothing that matters: nothing rebuilt, no time stamp moves.
+int NothingChanged(Pipeline& p, vtkUnstructuredGrid* grid)
+{
+  vtkTetMesh* mesh = p.Builder->GetMesh();
   // Nothing changed: nothing rebuilt, no time stamp moves.
   const vtkMTimeType meshTime = mesh->GetMTime();
-  const vtkMTimeType topologyTime = mesh->GetTopologyTime();
   p.Build(grid);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildNothing);
   TRC_CHECK(p.Compact->GetLastUpdate() == vtkTetMeshLayout::UpdatedNothing);
@@ -207,7 +203,14 @@ int TestTetMeshRebuild(int argc, char* argv[])
   p.Build(grid);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildNothing);
   TRC_CHECK(mesh->GetMTime() == meshTime);
+  return EXIT_SUCCESS;
+}
 
+// Points, scalars or both change: only they are rebuilt, and the result equals a full build.
+int PointsAndScalars(Pipeline& p, vtkUnstructuredGrid* grid)
+{
+  vtkTetMesh* mesh = p.Builder->GetMesh();
+  const vtkMTimeType topologyTime = mesh->GetTopologyTime();
   // Points only (a deforming mesh): the points path, and the same result as a full build.
   // The compact layout rewrites (marks modified) its points only: no re-upload of the rest.
   const vtkMTimeType tetPointsTime = p.Compact->GetArray(0)->GetMTime();
@@ -284,7 +287,14 @@ int TestTetMeshRebuild(int argc, char* argv[])
     (vtkTetMeshBuilder::RebuildPoints | vtkTetMeshBuilder::RebuildScalars));
   TRC_CHECK(mesh->GetTopologyTime() == topologyTime);
   TRC_CHECK_EMPTY(CompareWithFullBuild(grid, p));
+  return EXIT_SUCCESS;
+}
 
+// What changes the topology (or may): everything is rebuilt.
+int Everything(Pipeline& p, vtkUnstructuredGrid* grid)
+{
+  vtkTetMesh* mesh = p.Builder->GetMesh();
+  const vtkMTimeType topologyTime = mesh->GetTopologyTime();
   // A deformation that turns tetrahedra inside out (a mirror): everything is rebuilt, and the
   // result still equals a full build (now with every tetrahedron inverted in the input).
   vtkPoints* points = grid->GetPoints();
@@ -353,22 +363,21 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
   p.Build(twin);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildNothing);
+  return EXIT_SUCCESS;
+}
 
-  // torus_vistrails: half its tetrahedra inverted and 30 exactly flat. An exact translation
-  // (power-of-two step on double coordinates holding float values) keeps every orientation and
-  // every flat tetrahedron flat: points only, and still equal to a full build.
-  fileName = vtkTestUtilities::ExpandDataFileName(argc, argv, "Meshes/torus_vistrails.vtu");
-  reader->SetFileName(fileName);
-  delete[] fileName;
-  reader->Update();
-  vtkNew<vtkUnstructuredGrid> torus;
-  torus->DeepCopy(reader->GetOutput());
+// torus_vistrails: half its tetrahedra inverted and 30 exactly flat. An exact translation
+// (power-of-two step on double coordinates holding float values) keeps every orientation and
+// every flat tetrahedron flat: points only, and still equal to a full build.
+int TorusTranslation(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> torus = ReadGrid(argc, argv, "Meshes/torus_vistrails.vtu");
   vtkNew<vtkPoints> doublePoints;
   doublePoints->SetDataTypeToDouble();
   doublePoints->DeepCopy(torus->GetPoints());
   torus->SetPoints(doublePoints);
   Pipeline q;
-  mesh = q.Build(torus);
+  vtkTetMesh* mesh = q.Build(torus);
   TRC_CHECK(mesh->GetReport()->GetNumberOfInvertedTetrahedra() == 4626);
   TRC_CHECK(mesh->GetReport()->GetNumberOfDegenerateTetrahedra() == 30);
   for (vtkIdType i = 0; i < doublePoints->GetNumberOfPoints(); ++i)
@@ -398,6 +407,26 @@ int TestTetMeshRebuild(int argc, char* argv[])
   q.Build(torus);
   TRC_CHECK(q.Builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing);
   TRC_CHECK_EMPTY(CompareWithFullBuild(torus, q));
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int TestTetMeshRebuild(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid = ReadGrid(argc, argv, "Meshes/spx_vistrails.vtu");
+  TRC_CHECK(grid->GetNumberOfCells() == 12936);
+
+  Pipeline p;
+  vtkTetMesh* mesh = p.Build(grid);
+  TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
+  TRC_CHECK(p.Compact->GetLastUpdate() == vtkTetMeshLayout::UpdatedAll);
+  TRC_CHECK(p.Paper->GetLastUpdate() == vtkTetMeshLayout::UpdatedAll);
+  TRC_CHECK(mesh->GetReport()->GetUsable());
+  TRC_CHECK(NothingChanged(p, grid) == EXIT_SUCCESS);
+  TRC_CHECK(PointsAndScalars(p, grid) == EXIT_SUCCESS);
+  TRC_CHECK(Everything(p, grid) == EXIT_SUCCESS);
+  TRC_CHECK(TorusTranslation(argc, argv) == EXIT_SUCCESS);
 
   TRC_CHECK(std::string(vtkTetMeshBuilder::GetRebuildAsString(vtkTetMeshBuilder::RebuildPoints |
               vtkTetMeshBuilder::RebuildScalars)) == "points and scalars");

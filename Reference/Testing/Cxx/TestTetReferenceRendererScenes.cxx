@@ -128,26 +128,7 @@ bool Expected(const double nearP[3], const double d[3], double tEnd,
   return true;
 }
 
-// The ray parameter (0 at the near plane, 1 at the far plane) of window depth z on pixel (i, j).
-double LambdaAtDepth(vtkCamera* camera, int w, int h, int i, int j, double z)
-{
-  double nearP[3], farP[3];
-  trc::PixelRay(camera, w, h, i, j, nearP, farP);
-  vtkNew<vtkMatrix4x4> inverse;
-  inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(double(w) / h, -1, 1));
-  inverse->Invert();
-  const double in[4] = { 2.0 * (i + 0.5) / w - 1.0, 2.0 * (j + 0.5) / h - 1.0, 2.0 * z - 1.0, 1.0 };
-  double out[4];
-  inverse->MultiplyPoint(in, out);
-  double num = 0.0, den = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double dk = farP[k] - nearP[k];
-    num += (out[k] / out[3] - nearP[k]) * dk;
-    den += dk * dk;
-  }
-  return num / den;
-}
+using trc::LambdaAtDepth;
 
 // A translucent layer: the plane x = x0 where each pixel's ray meets it in front of the far
 // plane (window depth as float), premultiplied colour rgba; depth 1 elsewhere.
@@ -244,18 +225,7 @@ int CheckScene(vtkImageData* image, vtkCamera* camera, int w, int h,
   return seen;
 }
 
-double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
-{
-  vtkDataArray* da = a->GetPointData()->GetArray("RGBA");
-  vtkDataArray* db = b->GetPointData()->GetArray("RGBA");
-  double worst = 0.0;
-  for (vtkIdType i = 0; i < da->GetNumberOfValues(); ++i)
-  {
-    worst =
-      std::max(worst, std::fabs(da->GetComponent(i / 4, i % 4) - db->GetComponent(i / 4, i % 4)));
-  }
-  return worst;
-}
+using trc::MaxAbsDifference;
 
 const double Up[3] = { 0, 0, 1 };
 auto Flat = [](double, double, double) { return 0.5; };

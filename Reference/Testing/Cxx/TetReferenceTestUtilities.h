@@ -64,6 +64,20 @@ inline vtkImageData* RenderImage(vtkTetReferenceRenderer* renderer, vtkDataSet* 
   return renderer->Render() ? renderer->GetOutput() : nullptr;
 }
 
+// The largest difference between two images' "RGBA" values.
+inline double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
+{
+  vtkDataArray* da = a->GetPointData()->GetArray("RGBA");
+  vtkDataArray* db = b->GetPointData()->GetArray("RGBA");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < da->GetNumberOfValues(); ++i)
+  {
+    worst =
+      std::max(worst, std::fabs(da->GetComponent(i / 4, i % 4) - db->GetComponent(i / 4, i % 4)));
+  }
+  return worst;
+}
+
 // A grid of nx x ny x nz voxels of size h starting at origin, each split into tetrahedra.
 // Voxels for which skip(i, j, k) is true are left out (holes). The point scalars are
 // field(x, y, z) (array "Field"); the cell scalars are field at the tetrahedron's centroid
@@ -214,6 +228,27 @@ inline void PixelRay(
       p[k] = out[k] / out[3];
     }
   }
+}
+
+// The ray parameter (0 at the near plane, 1 at the far plane) of window depth z on pixel (i, j).
+inline double LambdaAtDepth(vtkCamera* camera, int w, int h, int i, int j, double z)
+{
+  double nearP[3], farP[3];
+  trc::PixelRay(camera, w, h, i, j, nearP, farP);
+  vtkNew<vtkMatrix4x4> inverse;
+  inverse->DeepCopy(camera->GetCompositeProjectionTransformMatrix(double(w) / h, -1, 1));
+  inverse->Invert();
+  const double in[4] = { 2.0 * (i + 0.5) / w - 1.0, 2.0 * (j + 0.5) / h - 1.0, 2.0 * z - 1.0, 1.0 };
+  double out[4];
+  inverse->MultiplyPoint(in, out);
+  double num = 0.0, den = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double dk = farP[k] - nearP[k];
+    num += (out[k] / out[3] - nearP[k]) * dk;
+    den += dk * dk;
+  }
+  return num / den;
 }
 
 // Pixel values of a reference output.

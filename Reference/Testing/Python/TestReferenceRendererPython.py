@@ -44,6 +44,44 @@ def make_property(lo, hi, unit):
     return prop
 
 
+def unit_tetrahedron():
+    """The tetrahedron (0,0,0), (1,0,0), (0,1,0), (0,0,1), of constant scalar 0.5."""
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
+        points.InsertNextPoint(p)
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(points)
+    grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
+    scalars = vtkDoubleArray()
+    for _ in range(4):
+        scalars.InsertNextValue(0.5)
+    grid.GetPointData().SetScalars(scalars)
+    return grid
+
+
+def camera_down_z():
+    """Looking down -z at the unit square with a parallel projection: through the unit
+    tetrahedron, the chord at (x, y) is 1 - x - y."""
+    camera = vtkCamera()
+    camera.ParallelProjectionOn()
+    camera.SetParallelScale(0.5)
+    camera.SetFocalPoint(0.5, 0.5, 0.0)
+    camera.SetPosition(0.5, 0.5, 5.0)
+    camera.SetViewUp(0, 1, 0)
+    camera.SetClippingRange(1.0, 10.0)
+    return camera
+
+
+def pixel_chords(n):
+    """(pixel index, chord through the unit tetrahedron) of every pixel of an n x n image seen
+    with camera_down_z()."""
+    for j in range(n):
+        for i in range(n):
+            x, y = (i + 0.5) / n, (j + 0.5) / n
+            yield i + n * j, max(0.0, 1.0 - x - y)
+
+
 class TestReferenceRendererPython(unittest.TestCase):
     def test_dataset(self):
         reader = vtkXMLUnstructuredGridReader()
@@ -91,25 +129,9 @@ class TestReferenceRendererPython(unittest.TestCase):
         self.assertLessEqual(stats[2], 0.5 + 1e-3)  # rounding to 8 bits only
 
     def test_single_tetrahedron(self):
-        points = vtkPoints()
-        points.SetDataTypeToDouble()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
-            points.InsertNextPoint(p)
-        grid = vtkUnstructuredGrid()
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-        scalars = vtkDoubleArray()
-        for _ in range(4):
-            scalars.InsertNextValue(0.5)
-        grid.GetPointData().SetScalars(scalars)
+        grid = unit_tetrahedron()
         # Looking down -z with a parallel projection: the chord at (x, y) is 1 - x - y.
-        camera = vtkCamera()
-        camera.ParallelProjectionOn()
-        camera.SetParallelScale(0.5)
-        camera.SetFocalPoint(0.5, 0.5, 0.0)
-        camera.SetPosition(0.5, 0.5, 5.0)
-        camera.SetViewUp(0, 1, 0)
-        camera.SetClippingRange(1.0, 10.0)
+        camera = camera_down_z()
         tau = 1.7
         prop = make_property(0.0, 1.0, 1.0)
         opacity = vtkPiecewiseFunction()
@@ -124,12 +146,9 @@ class TestReferenceRendererPython(unittest.TestCase):
         renderer.DoublePrecisionOutputOn()
         self.assertEqual(renderer.Render(), 1)
         rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
-        for j in range(16):
-            for i in range(16):
-                x, y = (i + 0.5) / 16, (j + 0.5) / 16
-                chord = max(0.0, 1.0 - x - y)
-                alpha = rgba.GetComponent(i + 16 * j, 3)
-                self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
+        for pixel, chord in pixel_chords(16):
+            alpha = rgba.GetComponent(pixel, 3)
+            self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
 
     def test_integrator(self):
         prop = make_property(0.0, 1.0, 2.0)
@@ -149,24 +168,8 @@ class TestReferenceRendererPython(unittest.TestCase):
 
     def test_scene(self):
         """Two overlapping tetrahedra (AddVolume) and a translucent layer in front of them."""
-        points = vtkPoints()
-        points.SetDataTypeToDouble()
-        for p in ((0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)):
-            points.InsertNextPoint(p)
-        grid = vtkUnstructuredGrid()
-        grid.SetPoints(points)
-        grid.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 3])
-        scalars = vtkDoubleArray()
-        for _ in range(4):
-            scalars.InsertNextValue(0.5)
-        grid.GetPointData().SetScalars(scalars)
-        camera = vtkCamera()
-        camera.ParallelProjectionOn()
-        camera.SetParallelScale(0.5)
-        camera.SetFocalPoint(0.5, 0.5, 0.0)
-        camera.SetPosition(0.5, 0.5, 5.0)
-        camera.SetViewUp(0, 1, 0)
-        camera.SetClippingRange(1.0, 10.0)
+        grid = unit_tetrahedron()
+        camera = camera_down_z()
 
         def prop(tau, rgb):
             color = vtkColorTransferFunction()
@@ -200,14 +203,11 @@ class TestReferenceRendererPython(unittest.TestCase):
         renderer.AddTranslucentLayer(layer_rgba, layer_depth)
         self.assertEqual(renderer.Render(), 1)
         rgba = renderer.GetOutput().GetPointData().GetArray("RGBA")
-        for j in range(16):
-            for i in range(16):
-                x, y = (i + 0.5) / 16, (j + 0.5) / 16
-                chord = max(0.0, 1.0 - x - y)
-                a = -math.expm1(-1.5 * chord)
-                expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
-                for k in range(4):
-                    self.assertAlmostEqual(rgba.GetComponent(i + 16 * j, k), expected[k], delta=1e-12)
+        for pixel, chord in pixel_chords(16):
+            a = -math.expm1(-1.5 * chord)
+            expected = (1.2 / 1.5 * 0.5 * a, 0.25, 0.3 / 1.5 * 0.5 * a, 1 - 0.5 * (1 - a))
+            for k in range(4):
+                self.assertAlmostEqual(rgba.GetComponent(pixel, k), expected[k], delta=1e-12)
 
 
 if __name__ == "__main__":

@@ -180,6 +180,17 @@ void ByName(vtkTiledRayCastVolumeMapper* mapper, const char* name, bool cells = 
   }
   mapper->SelectScalarArray(name);
 }
+
+// The mapper's input `input`, its scalars "s" selected by name (ByName).
+std::function<void(vtkTiledRayCastVolumeMapper*)> InputByName(
+  vtkDataObjectTree* input, bool cells = false)
+{
+  return [input, cells](vtkTiledRayCastVolumeMapper* m)
+  {
+    m->SetInputData(input);
+    ByName(m, "s", cells);
+  };
+}
 }
 
 int TestTiledRayCastComposite(int, char*[])
@@ -193,20 +204,14 @@ int TestTiledRayCastComposite(int, char*[])
   multiblock->SetNumberOfBlocks(2);
   multiblock->SetBlock(0, blocks[0]);
   multiblock->SetBlock(1, blocks[1]);
-  ok = Check("multiblock", appended,
-         [&](vtkTiledRayCastVolumeMapper* m)
-         {
-           m->SetInputData(multiblock);
-           ByName(m, "s");
-         },
-         2, 0, true) &&
-    ok;
+  ok = Check("multiblock", appended, InputByName(multiblock), 2, 0, true) && ok;
 
   // Through a pipeline: what a reader's output port gives.
   vtkNew<vtkMultiBlockDataGroupFilter> group;
   group->AddInputData(blocks[0]);
   group->AddInputData(blocks[1]);
-  ok = Check("pipeline", appended,
+  ok = Check(
+         "pipeline", appended,
          [&](vtkTiledRayCastVolumeMapper* m)
          {
            m->SetInputConnection(group->GetOutputPort());
@@ -224,13 +229,8 @@ int TestTiledRayCastComposite(int, char*[])
   partitions->SetPartition(3, blocks[1]);
   vtkNew<vtkPartitionedDataSetCollection> collection;
   collection->SetPartitionedDataSet(0, partitions);
-  ok = Check("partitioned collection with empty blocks", appended,
-         [&](vtkTiledRayCastVolumeMapper* m)
-         {
-           m->SetInputData(collection);
-           ByName(m, "s");
-         },
-         4, 2, true) &&
+  ok = Check("partitioned collection with empty blocks", appended, InputByName(collection), 4, 2,
+         true) &&
     ok;
 
   // Scalars that jump across the interface: its points stay distinct (crack faces).
@@ -239,13 +239,8 @@ int TestTiledRayCastComposite(int, char*[])
   vtkNew<vtkMultiBlockDataSet> jumpBlocks;
   jumpBlocks->SetBlock(0, jumping[0]);
   jumpBlocks->SetBlock(1, jumping[1]);
-  ok = Check("scalars jumping across blocks", Appended(jumping),
-         [&](vtkTiledRayCastVolumeMapper* m)
-         {
-           m->SetInputData(jumpBlocks);
-           ByName(m, "s");
-         },
-         2, 0, false) &&
+  ok = Check("scalars jumping across blocks", Appended(jumping), InputByName(jumpBlocks), 2, 0,
+         false) &&
     ok;
 
   // Cell scalars, per block.
@@ -260,14 +255,7 @@ int TestTiledRayCastComposite(int, char*[])
     cellBlocks[b]->ShallowCopy(toCells->GetOutput());
     cellTree->SetBlock(b, cellBlocks[b]);
   }
-  ok = Check("cell scalars", Appended(cellBlocks),
-         [&](vtkTiledRayCastVolumeMapper* m)
-         {
-           m->SetInputData(cellTree);
-           ByName(m, "s", true);
-         },
-         2, 0, true) &&
-    ok;
+  ok = Check("cell scalars", Appended(cellBlocks), InputByName(cellTree, true), 2, 0, true) && ok;
 
   // A block that is not an unstructured grid: an error, nothing drawn.
   {

@@ -91,6 +91,73 @@ bool RenderedWith(Scene& t, const char* pipeline)
   return Expect(used && std::string(used) == pipeline, pipeline);
 }
 
+// Rendered with `pipeline`, and rays entered the mesh.
+bool RaysEnteredWith(Scene& t, const char* pipeline)
+{
+  return RenderedWith(t, pipeline) &&
+    Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
+}
+
+// Tables interpolate the integral between grid points: looser bounds.
+void UseTableBounds(Scene& s)
+{
+  s.Bounds.RMSE = 1.5;
+  s.Bounds.P999 = 8.0;
+  s.Bounds.Max = 16.0;
+}
+
+// The scene's point scalars averaged to cell scalars, which the mapper renders.
+void UseCellScalars(Scene& s)
+{
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(s.Grid);
+  toCells->Update();
+  s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  s.Mapper->SetInputData(s.Grid);
+  s.Mapper->SetScalarModeToUseCellData();
+}
+
+using SceneCheck = std::function<bool(Scene&)>;
+using SceneSetup = std::function<bool(Scene&, int, char*[])>;
+
+// A mesh with the default transfer function for its `fraction`, seen from (azimuth, elevation),
+// with `check` after rendering.
+SceneSetup Seen(
+  const char* file, double fraction, double azimuth, double elevation, SceneCheck check = nullptr)
+{
+  return [=](Scene& s, int argc, char* argv[])
+  {
+    if (!s.Load(argc, argv, file, fraction))
+      return false;
+    s.View(azimuth, elevation);
+    s.Check = check;
+    return true;
+  };
+}
+
+// `setup` after a mapper setting (pipeline, integration mode, layout).
+SceneSetup After(std::function<void(vtkTiledRayCastVolumeMapper*)> setting, SceneSetup setup)
+{
+  return [=](Scene& s, int argc, char* argv[])
+  {
+    setting(s.Mapper);
+    return setup(s, argc, argv);
+  };
+}
+
+void Fragment(vtkTiledRayCastVolumeMapper* m)
+{
+  m->SetPipelineToFragment();
+}
+void Table2D(vtkTiledRayCastVolumeMapper* m)
+{
+  m->SetIntegrationModeToPreIntegration2D();
+}
+void Table3D(vtkTiledRayCastVolumeMapper* m)
+{
+  m->SetIntegrationModeToPreIntegration3D();
+}
+
 // The comb's teeth seen across: rays enter up to 6 times.
 bool LoadComb(Scene& s, int argc, char* argv[])
 {
@@ -157,11 +224,7 @@ bool LoadBlended(Scene& s, int argc, char* argv[], int mode)
     s.Volume->GetProperty()->SetScalarOpacityUnitDistance(0.1 * s.Grid->GetLength());
   }
   s.View(30, 20);
-  s.Check = [](Scene& t)
-  {
-    return RenderedWith(t, "Compute") &&
-      Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
-  };
+  s.Check = [](Scene& t) { return RaysEnteredWith(t, "Compute"); };
   return true;
 }
 
@@ -218,19 +281,21 @@ bool LoadClipped(Scene& s, int argc, char* argv[])
   return true;
 }
 
-// Near-opaque tets: torus_tetgen_100k with a unit distance of 1e-4 of its size, so that most
-// rays stop in the first few tets, each of an optical depth of tens. The tables once stored
-// alpha, which saturates there: the 3D table was 66/255 off at its worst, the 2D table 181.
-bool LoadOpaque(Scene& s, int argc, char* argv[], int mode)
+// torus_tetgen_100k in a table integration mode (the table's bounds). With `fraction` 1e-4 of
+// its size as unit distance the tets are near-opaque: most rays stop in the first few tets,
+// each of an optical depth of tens. The tables once stored alpha, which saturates there: the 3D
+// table was 66/255 off at its worst, the 2D table 181.
+SceneSetup TorusTable(int mode, double fraction)
 {
-  if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 1e-4))
-    return false;
-  s.Mapper->SetIntegrationMode(mode);
-  s.Bounds.RMSE = 1.5;
-  s.Bounds.P999 = 8.0;
-  s.Bounds.Max = 16.0;
-  s.View(20, 50);
-  return true;
+  return [=](Scene& s, int argc, char* argv[])
+  {
+    if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", fraction))
+      return false;
+    s.Mapper->SetIntegrationMode(mode);
+    UseTableBounds(s);
+    s.View(20, 50);
+    return true;
+  };
 }
 
 bool LoadThick(Scene& s, int mode)
@@ -243,8 +308,7 @@ bool LoadThick(Scene& s, int mode)
   scalars->SetName("scalar");
   for (vtkIdType i = 0; i < 8; ++i)
   {
-    scalars->InsertNextValue(
-      static_cast<float>(80.0 + 40.0 * (box->GetPoint(i)[2] + 12.0) / 24.0));
+    scalars->InsertNextValue(static_cast<float>(80.0 + 40.0 * (box->GetPoint(i)[2] + 12.0) / 24.0));
   }
   box->GetPointData()->SetScalars(scalars);
   vtkNew<vtkDataSetTriangleFilter> tets;
@@ -292,9 +356,9 @@ bool LoadThick(Scene& s, int mode)
 // Shading (vtkVolumeProperty::ShadeOn) of spx under the renderer's headlight, with a highlight
 // strong enough to show: every segment's colour is scaled and offset by its tet's normal, the
 // reference computing the same model from the mesh's own points in double.
-bool LoadShaded(Scene& s, int argc, char* argv[], double fraction = 0.03)
+bool LoadShaded(Scene& s, int argc, char* argv[])
 {
-  if (!s.Load(argc, argv, "spx_vistrails.vtu", fraction))
+  if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.03))
     return false;
   vtkVolumeProperty* property = s.Volume->GetProperty();
   property->ShadeOn();
@@ -321,24 +385,17 @@ bool LoadGradientOpacity(Scene& s, int argc, char* argv[])
   return true;
 }
 
-// Every scene: which mesh, which view, which mapper settings, which bounds and checks.
-using SceneSetup = std::function<bool(Scene&, int, char*[])>;
-const std::map<std::string, SceneSetup>& Scenes()
+// Meshes: convexity, boundary layers, cracks, scalars, the paper's layout.
+void AddMeshScenes(std::map<std::string, SceneSetup>& scenes)
 {
-  static const std::map<std::string, SceneSetup> scenes = {
+  const std::map<std::string, SceneSetup> more = {
     { "convex",
-      [](Scene& s, int argc, char* argv[])
-      {
-        if (!s.Load(argc, argv, "cube_sfepy_200k.vtu"))
-          return false;
-        s.View(30, 25);
-        s.Check = [](Scene& t)
+      Seen("cube_sfepy_200k.vtu", 0.05, 30, 25,
+        [](Scene& t)
         {
           return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() == 1,
             "a convex mesh has one boundary layer");
-        };
-        return true;
-      } },
+        }) },
     { "comb",
       [](Scene& s, int argc, char* argv[])
       {
@@ -378,66 +435,95 @@ const std::map<std::string, SceneSetup>& Scenes()
         };
         return true;
       } },
-    { "spx",
-      [](Scene& s, int argc, char* argv[])
-      {
-        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
-          return false;
-        s.View(20, 30);
-        return true;
-      } },
+    { "spx", Seen("spx_vistrails.vtu", 0.1, 20, 30) },
+    // A box with a cubic cavity: every ray through the middle leaves and re-enters.
     { "hollow",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // A box with a cubic cavity: every ray through the middle leaves and re-enters.
-        if (!s.Load(argc, argv, "hollowcube_tetgen_230k.vtu", 0.1))
-          return false;
-        s.View(15, 10);
-        s.Check = [](Scene& t)
+      Seen("hollowcube_tetgen_230k.vtu", 0.1, 15, 10,
+        [](Scene& t)
         {
           return Expect(t.Mapper->GetStatistics()->GetNumberOfLayers() >= 2,
             "rays through the cavity re-enter");
-        };
-        return true;
-      } },
-    { "bracket",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // Genus 9.
-        if (!s.Load(argc, argv, "bracket_tets.vtu", 0.1))
-          return false;
-        s.View(40, 30);
-        return true;
-      } },
+        }) },
+    // Genus 9.
+    { "bracket", Seen("bracket_tets.vtu", 0.1, 40, 30) },
+    // The LOX post split into 5 tets per hex: its periodic seam is a crack of coincident,
+    // unshared faces that rays must cross without losing or doubling anything.
     { "crack",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // The LOX post split into 5 tets per hex: its periodic seam is a crack of coincident,
-        // unshared faces that rays must cross without losing or doubling anything.
-        if (!s.Load(argc, argv, "post_tets5_classic.vtu", 0.1))
-          return false;
-        s.View(0, 60);
-        s.Check = [](Scene& t)
+      Seen("post_tets5_classic.vtu", 0.1, 0, 60,
+        [](Scene& t)
         {
           return Expect(t.Mapper->GetValidationReport()->GetNumberOfCrackFaces() > 0,
             "the builder reports the seam's crack faces");
-        };
-        return true;
-      } },
+        }) },
     { "cellscalars",
       [](Scene& s, int argc, char* argv[])
       {
         if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
           return false;
-        vtkNew<vtkPointDataToCellData> toCells;
-        toCells->SetInputData(s.Grid);
-        toCells->Update();
-        s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-        s.Mapper->SetInputData(s.Grid);
-        s.Mapper->SetScalarModeToUseCellData();
+        UseCellScalars(s);
         s.View(20, 30);
         return true;
       } },
+    { "offset",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // Double scalars far from zero: spx's scalar spread over 1 unit around 1e6, where a
+        // float steps by 1/16. The layouts store scalars minus the middle of their range,
+        // subtracted in double (vtkTetMesh::GetScalarShift), and the transfer function's nodes
+        // likewise: 21/255 RMSE off the exact reference before, rounding now.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        vtkDataArray* original = s.Grid->GetPointData()->GetScalars();
+        double range[2];
+        original->GetRange(range);
+        vtkNew<vtkDoubleArray> offset;
+        offset->SetName("offset");
+        offset->SetNumberOfTuples(original->GetNumberOfTuples());
+        for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
+        {
+          offset->SetValue(
+            i, 1.0e6 + (original->GetComponent(i, 0) - range[0]) / (range[1] - range[0]));
+        }
+        vtkNew<vtkUnstructuredGrid> grid;
+        grid->ShallowCopy(s.Grid);
+        grid->GetPointData()->SetScalars(offset);
+        s.Grid = grid;
+        s.Mapper->SetInputData(s.Grid);
+        s.Volume->SetProperty(trctest::MakePropertyFor(s.Grid, 0.1));
+        s.View(20, 30);
+        return true;
+      } },
+    { "paper",
+      [](Scene& s, int argc, char* argv[])
+      {
+        // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
+        // queries every 4 passes and 64-pixel tiles.
+        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
+          return false;
+        s.Mapper->SetPipelineToFragment();
+        s.Mapper->SetMeshLayoutToPaper();
+        s.Mapper->SetTetsPerPass(1);
+        s.Mapper->SetOcclusionQueryInterval(4);
+        s.Mapper->SetTileSize(64);
+        s.View(20, 30);
+        s.Check = [](Scene& t)
+        {
+          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
+          return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
+            Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&
+            Expect(stats->GetMeshBytesPerTetrahedron() >= 144, "144 bytes per tet");
+        };
+        return true;
+      } },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Cameras inside the mesh, parallel projection, volume matrices (mirrors too), geometry
+// in the volume.
+void AddViewScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "geometry",
       [](Scene& s, int argc, char* argv[])
       {
@@ -507,11 +593,7 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Volume->SetOrientation(0, 30, 0);
         s.Renderer->ResetCamera();
         s.View(20, 30);
-        s.Check = [](Scene& t)
-        {
-          return RenderedWith(t, "Compute") &&
-            Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
-        };
+        s.Check = [](Scene& t) { return RaysEnteredWith(t, "Compute"); };
         return true;
       } },
     { "mirror_fragment",
@@ -524,42 +606,17 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Volume->SetScale(1.0, 1.0, -1.0);
         s.Renderer->ResetCamera();
         s.View(20, 30);
-        s.Check = [](Scene& t)
-        {
-          return RenderedWith(t, "Fragment") &&
-            Expect(t.Mapper->GetStatistics()->GetNumberOfRays() > 5000, "rays entered");
-        };
+        s.Check = [](Scene& t) { return RaysEnteredWith(t, "Fragment"); };
         return true;
       } },
-    { "offset",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // Double scalars far from zero: spx's scalar spread over 1 unit around 1e6, where a
-        // float steps by 1/16. The layouts store scalars minus the middle of their range,
-        // subtracted in double (vtkTetMesh::GetScalarShift), and the transfer function's nodes
-        // likewise: 21/255 RMSE off the exact reference before, rounding now.
-        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
-          return false;
-        vtkDataArray* original = s.Grid->GetPointData()->GetScalars();
-        double range[2];
-        original->GetRange(range);
-        vtkNew<vtkDoubleArray> offset;
-        offset->SetName("offset");
-        offset->SetNumberOfTuples(original->GetNumberOfTuples());
-        for (vtkIdType i = 0; i < original->GetNumberOfTuples(); ++i)
-        {
-          offset->SetValue(
-            i, 1.0e6 + (original->GetComponent(i, 0) - range[0]) / (range[1] - range[0]));
-        }
-        vtkNew<vtkUnstructuredGrid> grid;
-        grid->ShallowCopy(s.Grid);
-        grid->GetPointData()->SetScalars(offset);
-        s.Grid = grid;
-        s.Mapper->SetInputData(s.Grid);
-        s.Volume->SetProperty(trctest::MakePropertyFor(s.Grid, 0.1));
-        s.View(20, 30);
-        return true;
-      } },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Blend modes and clipping planes.
+void AddBlendAndClipScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "maximum",
       [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::MAXIMUM_INTENSITY_BLEND); } },
@@ -573,12 +630,15 @@ const std::map<std::string, SceneSetup>& Scenes()
       [](Scene& s, int argc, char* argv[])
       { return LoadBlended(s, argc, argv, vtkVolumeMapper::ADDITIVE_BLEND); } },
     { "clipped", LoadClipped },
-    { "clipped_fragment",
-      [](Scene& s, int argc, char* argv[])
-      {
-        s.Mapper->SetPipelineToFragment();
-        return LoadClipped(s, argc, argv);
-      } },
+    { "clipped_fragment", After(Fragment, LoadClipped) },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// The integration modes on optically thick and near-opaque media.
+void AddIntegrationScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
     { "thick",
       [](Scene& s, int, char*[])
       { return LoadThick(s, vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION); } },
@@ -586,44 +646,22 @@ const std::map<std::string, SceneSetup>& Scenes()
       [](Scene& s, int, char*[])
       {
         // The 2D table splits optically thick segments (vtkTiledRayCastPreIntegration2D.glsl).
-        s.Bounds.RMSE = 1.5;
-        s.Bounds.P999 = 8.0;
-        s.Bounds.Max = 16.0;
+        UseTableBounds(s);
         return LoadThick(s, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D);
       } },
-    { "table3d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
-          return false;
-        s.Mapper->SetIntegrationModeToPreIntegration3D();
-        // Tables interpolate the integral between grid points: looser bounds.
-        s.Bounds.RMSE = 1.5;
-        s.Bounds.P999 = 8.0;
-        s.Bounds.Max = 16.0;
-        s.View(20, 50);
-        return true;
-      } },
-    { "opaque_table3d",
-      [](Scene& s, int argc, char* argv[])
-      { return LoadOpaque(s, argc, argv, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D); } },
-    { "opaque_table2d",
-      [](Scene& s, int argc, char* argv[])
-      { return LoadOpaque(s, argc, argv, vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D); } },
-    { "table2d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        if (!s.Load(argc, argv, "torus_tetgen_100k.vtu", 0.1))
-          return false;
-        s.Mapper->SetIntegrationModeToPreIntegration2D();
-        // Tables interpolate the integral between grid points: looser bounds.
-        s.Bounds.RMSE = 1.5;
-        s.Bounds.P999 = 8.0;
-        s.Bounds.Max = 16.0;
-        s.View(20, 50);
-        return true;
-      } },
-    { "shaded", [](Scene& s, int argc, char* argv[]) { return LoadShaded(s, argc, argv); } },
+    { "table3d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D, 0.1) },
+    { "opaque_table3d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D, 1e-4) },
+    { "opaque_table2d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, 1e-4) },
+    { "table2d", TorusTable(vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D, 0.1) },
+  };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Shading and gradient opacity.
+void AddShadingScenes(std::map<std::string, SceneSetup>& scenes)
+{
+  const std::map<std::string, SceneSetup> more = {
+    { "shaded", LoadShaded },
     { "shaded_fragment",
       [](Scene& s, int argc, char* argv[])
       {
@@ -639,32 +677,16 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.Mapper->SetMeshLayoutToPaper();
         return LoadShaded(s, argc, argv);
       } },
-    { "shaded_table2d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // spx's tets are thin for this transfer function: the table holds the default bounds.
-        s.Mapper->SetIntegrationModeToPreIntegration2D();
-        return LoadShaded(s, argc, argv);
-      } },
-    { "shaded_table3d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // spx's tets are thin for this transfer function: the table holds the default bounds.
-        s.Mapper->SetIntegrationModeToPreIntegration3D();
-        return LoadShaded(s, argc, argv);
-      } },
+    // spx's tets are thin for this transfer function: the tables hold the default bounds.
+    { "shaded_table2d", After(Table2D, LoadShaded) },
+    { "shaded_table3d", After(Table3D, LoadShaded) },
     { "shaded_cells",
       [](Scene& s, int argc, char* argv[])
       {
         // Cell scalars have no gradient: the ambient term alone (one warning says so).
         if (!LoadShaded(s, argc, argv))
           return false;
-        vtkNew<vtkPointDataToCellData> toCells;
-        toCells->SetInputData(s.Grid);
-        toCells->Update();
-        s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-        s.Mapper->SetInputData(s.Grid);
-        s.Mapper->SetScalarModeToUseCellData();
+        UseCellScalars(s);
         return true;
       } },
     { "shaded_lightkit",
@@ -684,18 +706,8 @@ const std::map<std::string, SceneSetup>& Scenes()
         return true;
       } },
     { "gradient_opacity", LoadGradientOpacity },
-    { "gradient_opacity_table2d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        s.Mapper->SetIntegrationModeToPreIntegration2D();
-        return LoadGradientOpacity(s, argc, argv);
-      } },
-    { "gradient_opacity_table3d",
-      [](Scene& s, int argc, char* argv[])
-      {
-        s.Mapper->SetIntegrationModeToPreIntegration3D();
-        return LoadGradientOpacity(s, argc, argv);
-      } },
+    { "gradient_opacity_table2d", After(Table2D, LoadGradientOpacity) },
+    { "gradient_opacity_table3d", After(Table3D, LoadGradientOpacity) },
     { "gradient_opacity_shaded_paper",
       [](Scene& s, int argc, char* argv[])
       {
@@ -714,29 +726,23 @@ const std::map<std::string, SceneSetup>& Scenes()
         s.View(20, 30);
         return true;
       } },
-    { "paper",
-      [](Scene& s, int argc, char* argv[])
-      {
-        // The paper's data layout and its one-tet-per-pass scheme with Z-update, occlusion
-        // queries every 4 passes and 64-pixel tiles.
-        if (!s.Load(argc, argv, "spx_vistrails.vtu", 0.1))
-          return false;
-        s.Mapper->SetPipelineToFragment();
-        s.Mapper->SetMeshLayoutToPaper();
-        s.Mapper->SetTetsPerPass(1);
-        s.Mapper->SetOcclusionQueryInterval(4);
-        s.Mapper->SetTileSize(64);
-        s.View(20, 30);
-        s.Check = [](Scene& t)
-        {
-          vtkTiledRayCastStatistics* stats = t.Mapper->GetStatistics();
-          return Expect(stats->GetMaximumPassesPerTile() > 4, "several passes per tile") &&
-            Expect(stats->GetNumberOfZUpdatePasses() > 0, "Z-update passes ran") &&
-            Expect(stats->GetMeshBytesPerTetrahedron() >= 144, "144 bytes per tet");
-        };
-        return true;
-      } },
   };
+  scenes.insert(more.begin(), more.end());
+}
+
+// Every scene: which mesh, which view, which mapper settings, which bounds and checks.
+const std::map<std::string, SceneSetup>& Scenes()
+{
+  static const std::map<std::string, SceneSetup> scenes = []
+  {
+    std::map<std::string, SceneSetup> all;
+    AddMeshScenes(all);
+    AddViewScenes(all);
+    AddBlendAndClipScenes(all);
+    AddIntegrationScenes(all);
+    AddShadingScenes(all);
+    return all;
+  }();
   return scenes;
 }
 }

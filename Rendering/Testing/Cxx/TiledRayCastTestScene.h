@@ -15,6 +15,7 @@
 #ifndef TiledRayCastTestScene_h
 #define TiledRayCastTestScene_h
 
+#include "TiledRayCastMessageCounter.h" // For trctest::MessageCounter
 #include "TiledRayCastSharedScenes.h"
 
 #include "vtkCamera.h"
@@ -57,20 +58,6 @@ inline bool Expect(bool condition, const std::string& what)
   }
   return condition;
 }
-
-// Collects the errors or warnings an object reports (and keeps them out of the test log).
-class MessageCounter : public vtkCommand
-{
-public:
-  static MessageCounter* New() { return new MessageCounter; }
-  void Execute(vtkObject*, unsigned long, void* data) override
-  {
-    ++this->Count;
-    this->Text += static_cast<const char*>(data);
-  }
-  int Count = 0;
-  std::string Text;
-};
 
 // A mapper of `grid` with `property`, its warnings counted, alone in a window of `size` pixels
 // (not yet rendered, camera reset).

@@ -33,41 +33,57 @@ DATA = None
 SIZE = 160
 
 
+def read_spx():
+    reader = vtkXMLUnstructuredGridReader()
+    reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
+    reader.Update()
+    return reader
+
+
+def spx_property(grid):
+    """Blue to red, opacity 0.05 to 0.6, a unit distance of a tenth of the mesh's size."""
+    lo, hi = grid.GetPointData().GetScalars().GetRange()
+    color = vtkColorTransferFunction()
+    color.AddRGBPoint(lo, 0.1, 0.3, 1.0)
+    color.AddRGBPoint(hi, 1.0, 0.2, 0.1)
+    opacity = vtkPiecewiseFunction()
+    opacity.AddPoint(lo, 0.05)
+    opacity.AddPoint(hi, 0.6)
+    prop = vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(0.1 * grid.GetLength())
+    return prop
+
+
+def offscreen_window(mapper, prop, size, multisamples=None):
+    """The volume of `mapper` and `prop` alone in an off-screen window, camera reset."""
+    volume = vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    renderer = vtkRenderer()
+    renderer.AddVolume(volume)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    if multisamples is not None:
+        window.SetMultiSamples(multisamples)
+    window.SetSize(size, size)
+    window.AddRenderer(renderer)
+    renderer.ResetCamera()
+    return volume, renderer, window
+
+
 class TestTiledRayCastPython(unittest.TestCase):
     def test_render_matches_reference(self):
-        reader = vtkXMLUnstructuredGridReader()
-        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-        reader.Update()
-        grid = reader.GetOutput()
-        lo, hi = grid.GetPointData().GetScalars().GetRange()
-        color = vtkColorTransferFunction()
-        color.AddRGBPoint(lo, 0.1, 0.3, 1.0)
-        color.AddRGBPoint(hi, 1.0, 0.2, 0.1)
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(lo, 0.05)
-        opacity.AddPoint(hi, 0.6)
-        prop = vtkVolumeProperty()
-        prop.SetColor(color)
-        prop.SetScalarOpacity(opacity)
-        prop.SetScalarOpacityUnitDistance(0.1 * grid.GetLength())
-
+        grid = read_spx().GetOutput()
+        prop = spx_property(grid)
         mapper = vtkTiledRayCastVolumeMapper()
         mapper.SetInputData(grid)
         mapper.SynchronousStatisticsOn()
-        volume = vtkVolume()
-        volume.SetMapper(mapper)
-        volume.SetProperty(prop)
-        renderer = vtkRenderer()
-        renderer.AddVolume(volume)
+        volume, renderer, window = offscreen_window(mapper, prop, SIZE, multisamples=0)
         # 8-bit exact (26, 26, 38): 0.1 would be 25.5, which drivers round either way (NVIDIA
         # down, Mesa up), a 1/255 difference on every background pixel of the comparison.
         renderer.SetBackground(26 / 255.0, 26 / 255.0, 38 / 255.0)
-        window = vtkRenderWindow()
-        window.SetOffScreenRendering(1)
-        window.SetMultiSamples(0)
-        window.SetSize(SIZE, SIZE)
-        window.AddRenderer(renderer)
-        renderer.ResetCamera()
         renderer.GetActiveCamera().Azimuth(20)
         renderer.GetActiveCamera().Elevation(30)
         renderer.GetActiveCamera().OrthogonalizeViewUp()
@@ -122,40 +138,18 @@ class TestTiledRayCastPython(unittest.TestCase):
     def test_composite_input_through_a_pipeline(self):
         """A multiblock from a pipeline (a reader's output port would do the same): rendered
         in one traversal, camera reset from the mapper's bounds, equal to the grid's image."""
-        reader = vtkXMLUnstructuredGridReader()
-        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-        reader.Update()
+        reader = read_spx()
         grid = reader.GetOutput()
         group = vtkMultiBlockDataGroupFilter()
         group.AddInputConnection(reader.GetOutputPort())
         group.AddInputData(vtkUnstructuredGrid())  # an empty block, skipped
-        lo, hi = grid.GetPointData().GetScalars().GetRange()
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(lo, 0.05)
-        opacity.AddPoint(hi, 0.6)
-        color = vtkColorTransferFunction()
-        color.AddRGBPoint(lo, 0.1, 0.3, 1.0)
-        color.AddRGBPoint(hi, 1.0, 0.2, 0.1)
-        prop = vtkVolumeProperty()
-        prop.SetColor(color)
-        prop.SetScalarOpacity(opacity)
-        prop.SetScalarOpacityUnitDistance(0.1 * grid.GetLength())
+        prop = spx_property(grid)
         images = []
         for connect in (lambda m: m.SetInputConnection(group.GetOutputPort()),
                         lambda m: m.SetInputData(grid)):
             mapper = vtkTiledRayCastVolumeMapper()
             connect(mapper)
-            volume = vtkVolume()
-            volume.SetMapper(mapper)
-            volume.SetProperty(prop)
-            renderer = vtkRenderer()
-            renderer.AddVolume(volume)
-            window = vtkRenderWindow()
-            window.SetOffScreenRendering(1)
-            window.SetMultiSamples(0)
-            window.SetSize(64, 64)
-            window.AddRenderer(renderer)
-            renderer.ResetCamera()
+            volume, renderer, window = offscreen_window(mapper, prop, 64, multisamples=0)
             window.Render()
             self.assertTrue(mapper.GetStatistics().GetRendered())
             pixels = vtkUnsignedCharArray()
@@ -169,10 +163,7 @@ class TestTiledRayCastPython(unittest.TestCase):
         self.assertGreater(max(images[0]), 0)
 
     def test_progress_and_empty_frame(self):
-        reader = vtkXMLUnstructuredGridReader()
-        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-        reader.Update()
-        grid = reader.GetOutput()
+        grid = read_spx().GetOutput()
         lo, hi = grid.GetPointData().GetScalars().GetRange()
         opacity = vtkPiecewiseFunction()
         opacity.AddPoint(lo, 0.1)
@@ -184,16 +175,7 @@ class TestTiledRayCastPython(unittest.TestCase):
         progress = []
         mapper.AddObserver(vtkCommand.ProgressEvent,
                            lambda obj, event: progress.append(obj.GetProgress()))
-        volume = vtkVolume()
-        volume.SetMapper(mapper)
-        volume.SetProperty(prop)
-        renderer = vtkRenderer()
-        renderer.AddVolume(volume)
-        window = vtkRenderWindow()
-        window.SetOffScreenRendering(1)
-        window.SetSize(64, 64)
-        window.AddRenderer(renderer)
-        renderer.ResetCamera()
+        volume, renderer, window = offscreen_window(mapper, prop, 64)
 
         # The first frame builds the mesh: progress from 0 through the build's phases to 1
         # (after the 0 and 1 of VTK's executive, which updates the mapper before its Render()).
