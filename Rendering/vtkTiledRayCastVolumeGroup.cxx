@@ -1,0 +1,234 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeGroup.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastVolumeGroup.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkVolume.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace
+{
+// Per renderer, the volumes drawn in its current frame by another volume's mapper. Cleared when
+// the renderer starts a frame (its StartEvent comes before any volume is drawn), so a mark
+// never outlives the frame it was made in, whatever order VTK calls the mappers in next.
+struct RendererFrame
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  std::set<vtkVolume*> Drawn;
+};
+std::map<vtkRenderer*, RendererFrame>& Frames()
+{
+  static std::map<vtkRenderer*, RendererFrame> frames;
+  return frames;
+}
+
+void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
+{
+  auto& frames = Frames();
+  auto it = frames.find(static_cast<vtkRenderer*>(caller));
+  if (it == frames.end())
+  {
+    return;
+  }
+  if (event == vtkCommand::DeleteEvent)
+  {
+    frames.erase(it);
+  }
+  else
+  {
+    it->second.Drawn.clear();
+  }
+}
+
+std::string Refusal(const std::string& reason)
+{
+  return "This volume overlaps another volume of a tiled ray-cast mapper, but " + reason +
+    ": it is drawn on its own, before or after the others in VTK's order, not mixed with them "
+    "where they overlap (docs/mapper.md, \"Overlapping volumes\").";
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::Overlap(vtkVolume* a, vtkVolume* b)
+{
+  const double* p = a->GetBounds();
+  double ba[6];
+  std::copy(p, p + 6, ba);
+  const double* bb = b->GetBounds();
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(ba[2 * i] <= bb[2 * i + 1] && bb[2 * i] <= ba[2 * i + 1]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::Select(
+  const std::vector<Candidate>& candidates, vtkVolume* self)
+{
+  std::vector<Candidate> alone;
+  std::vector<Candidate> eligible;
+  for (const Candidate& c : candidates)
+  {
+    if (c.Volume == self)
+    {
+      alone.push_back(c);
+    }
+    if (c.Member->GetGroupRefusal(c.Volume, false).empty())
+    {
+      eligible.push_back(c);
+    }
+  }
+  if (alone.empty())
+  {
+    return alone;
+  }
+  const Candidate me = alone.front();
+  const std::string refusal = me.Member->GetGroupRefusal(self, false);
+  if (!refusal.empty())
+  {
+    for (const Candidate& c : candidates)
+    {
+      if (c.Volume != self && Overlap(self, c.Volume))
+      {
+        me.Member->WarnGroupOnce(Refusal(refusal));
+        break;
+      }
+    }
+    return alone;
+  }
+  // The volumes that overlap this one, directly or through others.
+  std::vector<bool> in(eligible.size(), false);
+  std::vector<size_t> todo;
+  for (size_t i = 0; i < eligible.size(); ++i)
+  {
+    if (eligible[i].Volume == self)
+    {
+      in[i] = true;
+      todo.push_back(i);
+    }
+  }
+  while (!todo.empty())
+  {
+    const size_t i = todo.back();
+    todo.pop_back();
+    for (size_t j = 0; j < eligible.size(); ++j)
+    {
+      if (!in[j] && Overlap(eligible[i].Volume, eligible[j].Volume))
+      {
+        in[j] = true;
+        todo.push_back(j);
+      }
+    }
+  }
+  std::vector<Candidate> group = alone;
+  for (size_t i = 0; i < eligible.size(); ++i)
+  {
+    if (in[i] && eligible[i].Volume != self)
+    {
+      group.push_back(eligible[i]);
+    }
+  }
+  if (group.size() > static_cast<size_t>(MaximumVolumes))
+  {
+    me.Member->WarnGroupOnce(Refusal(std::to_string(group.size()) +
+      " volumes overlap, directly or through others, and one traversal takes at most " +
+      std::to_string(MaximumVolumes)));
+    return alone;
+  }
+  return group;
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeGroup::Render(
+  vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const std::vector<Candidate>& group)
+{
+  if (group.size() < 2)
+  {
+    return 0;
+  }
+  // Each volume's own CPU work (only what changed); the first sets the image size.
+  int rays[2] = { 0, 0 };
+  vtkTiledRayCastGroupMember* first = group.front().Member;
+  if (!first->PrepareGroupFrame(renderer, group.front().Volume, window, true, rays))
+  {
+    return 0;
+  }
+  std::vector<vtkTiledRayCastGroupMember*> members;
+  std::vector<vtkVolume*> volumes;
+  for (const Candidate& c : group)
+  {
+    if (c.Member != first && !c.Member->PrepareGroupFrame(renderer, c.Volume, window, false, rays))
+    {
+      continue; // it draws nothing: its own Render() says why
+    }
+    const std::string refusal = c.Member->GetGroupRefusal(c.Volume, true);
+    if (!refusal.empty())
+    {
+      c.Member->WarnGroupOnce(Refusal(refusal));
+      if (c.Member == first)
+      {
+        return 0;
+      }
+      continue;
+    }
+    members.push_back(c.Member);
+    volumes.push_back(c.Volume);
+  }
+  if (members.size() < 2 || !first->DrawGroup(window, rays, members))
+  {
+    return 0;
+  }
+  const int count = static_cast<int>(members.size());
+  for (size_t i = 1; i < members.size(); ++i)
+  {
+    MarkDrawn(renderer, volumes[i]);
+    members[i]->FinishGroupFrame(count);
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto& frames = Frames();
+  RendererFrame& frame = frames[renderer];
+  if (!frame.Renderer)
+  {
+    // A renderer seen for the first time (or a new one at a deleted one's address).
+    frame.Renderer = renderer;
+    frame.Drawn.clear();
+    vtkNew<vtkCallbackCommand> callback;
+    callback->SetCallback(RendererEvent);
+    renderer->AddObserver(vtkCommand::StartEvent, callback);
+    renderer->AddObserver(vtkCommand::DeleteEvent, callback);
+  }
+  frame.Drawn.insert(volume);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto& frames = Frames();
+  auto it = frames.find(renderer);
+  return it != frames.end() && it->second.Renderer == renderer &&
+    it->second.Drawn.count(volume) > 0;
+}
