@@ -69,17 +69,6 @@ const int TRC_GROUP_MAXIMUM_PANELS = 4096;
 //------------------------------------------------------------------------------
 // One function per thing the traversal needs of volume m: each line marked EachMember is
 // repeated for every volume, @ replaced by its index.
-void trcGroupRay(int m, vec2 fragCoord, out vec3 origin, out vec3 dir, out float lambdaNear,
-  out float lambdaMax, out float worldScale)
-{
-  origin = vec3(0.0);
-  dir = vec3(0.0);
-  lambdaNear = 0.0;
-  lambdaMax = 0.0;
-  worldScale = 0.0;
-//TRC::EachMember if (m == @) trcMemberRay_v@(fragCoord, origin, dir, lambdaNear, lambdaMax, worldScale);
-}
-
 float trcGroupExit(int m, vec3 origin, vec3 dir, uint tet, int entry, float lambda,
   out int exitFace, out vec4 field, out uvec4 words)
 {
@@ -101,34 +90,6 @@ bool trcGroupNext(int m, uvec4 words, int exitFace, inout uint tet, inout int en
 void trcGroupIntegrate(int m, float sf, float sb, float d, inout vec4 color)
 {
 //TRC::EachMember if (m == @) trcIntegrate_v@(sf, sb, d, color);
-}
-
-int trcGroupNodes(int m)
-{
-  int n = 0;
-//TRC::EachMember if (m == @) n = trcMemberNodes_v@();
-  return n;
-}
-
-float trcGroupNodeScalar(int m, int i)
-{
-  float s = 0.0;
-//TRC::EachMember if (m == @) s = trcNodeScalar_v@(i);
-  return s;
-}
-
-int trcGroupFindNode(int m, float s)
-{
-  int i = -1;
-//TRC::EachMember if (m == @) i = trcFindNode_v@(s);
-  return i;
-}
-
-void trcGroupEvaluate(int m, float s, int below, out vec3 c, out float tau)
-{
-  c = vec3(0.0);
-  tau = 0.0;
-//TRC::EachMember if (m == @) trcEvaluate_v@(s, below, c, tau);
 }
 
 //------------------------------------------------------------------------------
@@ -173,94 +134,40 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
 // linearly from sf[m] to sb[m] (m inside): the mixture, attenuation sum tau_i, emission
 // sum tau_i c_i (docs/design.md, "Overlapping media"). The piece is cut at every node of every
 // volume's transfer function that its scalar crosses; between cuts each volume's attenuation
-// and colour are linear, the sums are linear and quadratic (trcCompositeMixture).
+// and colour are linear, the sums are linear and quadratic (trcCompositeMixture). Each
+// volume's code appears once (a line per volume), never behind a loop over volumes.
 void trcGroupMixture(bool inside[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
   float sb[TRC_GROUP_MEMBERS], float d, inout vec4 color)
 {
-  // Per volume: its nodes, and the next node its scalar crosses (going up, the first above;
-  // going down, the last below; constant, the node at or below it).
   bool used[TRC_GROUP_MEMBERS];
-  int nodes[TRC_GROUP_MEMBERS];
   int next[TRC_GROUP_MEMBERS];
   int crossings = 0;
   for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
   {
     // A tet touching a non-finite scalar is transparent, as in trcIntegrate.
     used[m] = inside[m] && !isnan(sf[m]) && !isnan(sb[m]) && !isinf(sf[m]) && !isinf(sb[m]);
-    nodes[m] = 0;
-    next[m] = -1;
-    if (used[m])
-    {
-      nodes[m] = trcGroupNodes(m);
-      crossings += nodes[m];
-      int below = trcGroupFindNode(m, sf[m]);
-      next[m] = sb[m] > sf[m] ? below + 1
-        : (sb[m] < sf[m] && below >= 0 && trcGroupNodeScalar(m, below) >= sf[m] ? below - 1
-                                                                                   : below);
-    }
   }
-  float t0 = 0.0;
-  for (int part = 0; part <= crossings && t0 < 1.0; ++part)
+//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@]) : -1;
+//TRC::EachMember crossings += used[@] ? trcMemberNodes_v@() : 0;
+  float u0 = 0.0;
+  for (int part = 0; part <= crossings && u0 < 1.0; ++part)
   {
-    float t1 = 1.0;
-    for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
-    {
-      float ds = sb[m] - sf[m];
-      if (used[m] && ((ds > 0.0 && next[m] < nodes[m]) || (ds < 0.0 && next[m] >= 0)))
-      {
-        t1 = min(t1, (trcGroupNodeScalar(m, next[m]) - sf[m]) / ds);
-      }
-    }
-    t1 = max(t1, t0);
+    float u1 = 1.0;
+//TRC::EachMember u1 = min(u1, trcMemberCrossing_v@(used[@], sf[@], sb[@], next[@]));
+    u1 = max(u1, u0);
     float ta = 0.0;
     float tb = 0.0;
     vec3 e0 = vec3(0.0);
     vec3 e1 = vec3(0.0);
     vec3 e2 = vec3(0.0);
-    for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
-    {
-      if (!used[m])
-      {
-        continue;
-      }
-      float ds = sb[m] - sf[m];
-      int below = ds > 0.0 ? next[m] - 1 : next[m];
-      vec3 c0;
-      vec3 c1;
-      float a0;
-      float a1;
-      trcGroupEvaluate(m, sf[m] + t0 * ds, below, c0, a0);
-      trcGroupEvaluate(m, sf[m] + t1 * ds, below, c1, a1);
-      ta += a0;
-      tb += a1;
-      e0 += a0 * c0;
-      e1 += a0 * (c1 - c0) + (a1 - a0) * c0;
-      e2 += (a1 - a0) * (c1 - c0);
-    }
-    trcCompositeMixture(ta, tb, e0, e1, e2, d * (t1 - t0), color);
+//TRC::EachMember trcMemberMixturePart_v@(used[@], sf[@], sb[@], next[@], u0, u1, ta, tb, e0, e1, e2);
+    trcCompositeMixture(ta, tb, e0, e1, e2, d * (u1 - u0), color);
     if (color.a >= in_groupEarlyTermination)
     {
       return;
     }
-    // The volumes whose node was crossed at t1 go on to the next (several nodes at one scalar
-    // at once).
-    for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
-    {
-      float ds = sb[m] - sf[m];
-      if (!used[m])
-      {
-        continue;
-      }
-      while (ds > 0.0 && next[m] < nodes[m] && (trcGroupNodeScalar(m, next[m]) - sf[m]) / ds <= t1)
-      {
-        ++next[m];
-      }
-      while (ds < 0.0 && next[m] >= 0 && (trcGroupNodeScalar(m, next[m]) - sf[m]) / ds <= t1)
-      {
-        --next[m];
-      }
-    }
-    t0 = t1;
+//TRC::EachMember next[@] = trcMemberPassNodes_v@(used[@], sf[@], sb[@], next[@], u1);
+    u0 = u1;
   }
 }
 
@@ -369,11 +276,11 @@ void main()
     float sb[TRC_GROUP_MEMBERS];
     // Where opaque geometry or the far plane ends the ray, in mu.
     float muMax = TRC_GROUP_FAR;
+    float lambdaMax[TRC_GROUP_MEMBERS];
+//TRC::EachMember trcMemberRay_v@(fragCoord, origin[@], dir[@], lambdaNear[@], lambdaMax[@], worldScale[@]);
     for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
     {
-      float lambdaMax;
-      trcGroupRay(m, fragCoord, origin[m], dir[m], lambdaNear[m], lambdaMax, worldScale[m]);
-      muMax = min(muMax, lambdaMax - lambdaNear[m]);
+      muMax = min(muMax, lambdaMax[m] - lambdaNear[m]);
       inside[m] = false;
       lastLambda[m] = 0.0;
       lastKey[m] = 0u;
@@ -389,27 +296,33 @@ void main()
     float mu = -TRC_GROUP_FAR;
     while (true)
     {
-      // The nearest event: a volume leaves its tet, or a waiting volume enters.
+      // The nearest event: volume m leaves its tet or enters (the lowest index first on a tie,
+      // the others follow at the same place). Only m moves on, so that each volume's walk
+      // appears once in the loop (a CPU implementation runs every branch of it).
+      int m = -1;
       float event = TRC_GROUP_FAR;
-      bool any = false;
       int count = 0;
       int alone = 0;
-      for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
+      for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
       {
-        if (inside[m])
+        float at = TRC_GROUP_FAR;
+        if (inside[k])
         {
-          event = min(event, exitAt[m] - lambdaNear[m]);
-          any = true;
+          at = exitAt[k] - lambdaNear[k];
           ++count;
-          alone = m;
+          alone = k;
         }
-        else if (pending[m])
+        else if (pending[k])
         {
-          event = min(event, entryLambda[m] - lambdaNear[m]);
-          any = true;
+          at = entryLambda[k] - lambdaNear[k];
+        }
+        if ((inside[k] || pending[k]) && (m < 0 || at < event))
+        {
+          m = k;
+          event = at;
         }
       }
-      if (!any)
+      if (m < 0)
       {
         break;
       }
@@ -418,27 +331,32 @@ void main()
       float end = min(event, muMax);
       if (count > 0 && end > mu)
       {
-        for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
+        float to[TRC_GROUP_MEMBERS];
+        for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
         {
-          if (inside[m])
+          to[k] = from[k];
+          if (inside[k])
           {
-            float to = end == exitAt[m] - lambdaNear[m] ? exitAt[m]
-                                                        : min(exitAt[m], end + lambdaNear[m]);
-            to = max(to, from[m]);
-            sf[m] = dot(field[m].xyz, origin[m] + from[m] * dir[m]) + field[m].w;
-            sb[m] = dot(field[m].xyz, origin[m] + to * dir[m]) + field[m].w;
-            if (count == 1)
-            {
-              // One volume: its own integration, exactly as its own walk does.
-              trcGroupIntegrate(m, sf[m], sb[m], (to - from[m]) * worldScale[m], color);
-            }
-            from[m] = to;
+            to[k] = k == m && end == event ? exitAt[k] : min(exitAt[k], end + lambdaNear[k]);
+            to[k] = max(to[k], from[k]);
+            sf[k] = dot(field[k].xyz, origin[k] + from[k] * dir[k]) + field[k].w;
+            sb[k] = dot(field[k].xyz, origin[k] + to[k] * dir[k]) + field[k].w;
           }
         }
-        if (count > 1)
+        if (count == 1)
+        {
+          // One volume: its own integration, exactly as its own walk does.
+          trcGroupIntegrate(
+            alone, sf[alone], sb[alone], (to[alone] - from[alone]) * worldScale[alone], color);
+        }
+        else
         {
           trcGroupMixture(inside, sf, sb, (end - mu) * worldScale[alone], color);
           mixed = true;
+        }
+        for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
+        {
+          from[k] = to[k];
         }
       }
       if (color.a >= in_groupEarlyTermination)
@@ -450,49 +368,48 @@ void main()
       {
         break;
       }
-      mu = event;
-      // The volumes whose event it was move on: to the next tet, to their next entry (the
-      // one-volume traversal's peeling rules), or into the tet they enter.
-      for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
+      mu = max(mu, event);
+      // Volume m moves on: to the next tet, to its next entry (the one-volume traversal's
+      // peeling rules), or into the tet it enters.
+      bool walks = true;
+      if (inside[m])
       {
-        if (inside[m] && exitAt[m] - lambdaNear[m] == event)
+        from[m] = exitAt[m];
+        if (stalls[m] <= TRC_GROUP_MAXIMUM_STALLS && layerSteps[m] < in_maximumSteps &&
+          trcGroupNext(m, words[m], exitFace[m], tet[m], entry[m]))
         {
-          from[m] = exitAt[m];
-          if (stalls[m] <= TRC_GROUP_MAXIMUM_STALLS && layerSteps[m] < in_maximumSteps &&
-            trcGroupNext(m, words[m], exitFace[m], tet[m], entry[m]))
-          {
-            ++steps;
-            ++layerSteps[m];
-            exitAt[m] = trcGroupExit(
-              m, origin[m], dir[m], tet[m], entry[m], from[m], exitFace[m], field[m], words[m]);
-            stalls[m] = exitAt[m] > from[m] ? 0 : stalls[m] + 1;
-          }
-          else
-          {
-            stopped = stopped || layerSteps[m] >= in_maximumSteps;
-            inside[m] = false;
-            pending[m] = trcGroupNextEntry(head, uint(m), false, from[m], lastLambda[m],
-                           lastKey[m], entryLambda[m], entryKey[m], entryNear[m]) != 0u;
-            entryLambda[m] = max(entryLambda[m], from[m]);
-          }
+          ++layerSteps[m];
         }
-        else if (!inside[m] && pending[m] && entryLambda[m] - lambdaNear[m] == event)
+        else
         {
-          pending[m] = false;
-          inside[m] = true;
-          ++layers;
-          ++steps;
-          startedNear = startedNear || entryNear[m];
-          lastLambda[m] = entryLambda[m];
-          lastKey[m] = entryNear[m] ? TRC_GROUP_NEAR_PLANE_KEY : entryKey[m];
-          tet[m] = entryKey[m] >> 2u;
-          entry[m] = entryNear[m] ? -1 : int(entryKey[m] & 3u);
-          from[m] = entryLambda[m];
-          layerSteps[m] = 1;
-          exitAt[m] = trcGroupExit(
-            m, origin[m], dir[m], tet[m], entry[m], from[m], exitFace[m], field[m], words[m]);
-          stalls[m] = exitAt[m] > from[m] ? 0 : 1;
+          stopped = stopped || layerSteps[m] >= in_maximumSteps;
+          inside[m] = false;
+          walks = false;
+          pending[m] = trcGroupNextEntry(head, uint(m), false, from[m], lastLambda[m],
+                         lastKey[m], entryLambda[m], entryKey[m], entryNear[m]) != 0u;
+          entryLambda[m] = max(entryLambda[m], from[m]);
         }
+      }
+      else
+      {
+        pending[m] = false;
+        inside[m] = true;
+        ++layers;
+        startedNear = startedNear || entryNear[m];
+        lastLambda[m] = entryLambda[m];
+        lastKey[m] = entryNear[m] ? TRC_GROUP_NEAR_PLANE_KEY : entryKey[m];
+        tet[m] = entryKey[m] >> 2u;
+        entry[m] = entryNear[m] ? -1 : int(entryKey[m] & 3u);
+        from[m] = entryLambda[m];
+        layerSteps[m] = 1;
+        stalls[m] = 0;
+      }
+      if (walks)
+      {
+        ++steps;
+        exitAt[m] = trcGroupExit(
+          m, origin[m], dir[m], tet[m], entry[m], from[m], exitFace[m], field[m], words[m]);
+        stalls[m] = exitAt[m] > from[m] ? 0 : stalls[m] + 1;
       }
     }
     atomicAdd(trcGroupRays, 1u);

@@ -334,6 +334,60 @@ bool TestApart(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
   ok = Expect(GroupWarnings(scene.Warnings) == 0, "apart: no warning") && ok;
   return ok;
 }
+
+// Four overlapping copies of a mesh, each turned and with its own transfer function: one
+// traversal of four. A fifth overlapping volume: more than a group takes, each drawn alone,
+// warned once per mapper.
+bool TestFour(vtkUnstructuredGrid* spx)
+{
+  Scene scene(128);
+  for (int i = 0; i < 4; ++i)
+  {
+    vtkVolume* volume = scene.Add(spx,
+      i % 2 == 0 ? trctest::MakePropertyFor(spx, 0.1 + 0.05 * i)
+                 : OtherProperty(spx, 0.1 + 0.05 * i));
+    const double offset[3] = { 0.08 * i, -0.04 * i, 0.02 * i };
+    const double orientation[3] = { 15.0 * i, 25.0 * i, -10.0 * i };
+    Place(volume, spx, spx, 1.0 - 0.1 * i, offset, orientation);
+  }
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Elevation(-20);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "four overlapping");
+
+  vtkVolume* fifth = scene.Add(spx, OtherProperty(spx, 0.3));
+  const double offset[3] = { -0.05, 0.05, 0.0 };
+  const double orientation[3] = { 0, 0, 90 };
+  Place(fifth, spx, spx, 0.8, offset, orientation);
+  scene.Window->Render();
+  for (auto& mapper : scene.Mappers)
+  {
+    ok = Expect(mapper->GetStatistics()->GetRendered() &&
+             mapper->GetStatistics()->GetNumberOfGroupedVolumes() == 1,
+           "five overlapping: each drawn alone") &&
+      ok;
+  }
+  ok = Expect(GroupWarnings(scene.Warnings) == 5, "five overlapping: one warning per mapper") && ok;
+  scene.Window->Render();
+  ok = Expect(GroupWarnings(scene.Warnings) == 5, "five overlapping: warned once") && ok;
+  return ok;
+}
+
+// Optically thick media overlapping (optical depth up to about 40 across): the mixture's
+// panels and early ray termination.
+bool TestThick(vtkUnstructuredGrid* box)
+{
+  Scene scene(96);
+  scene.Add(box, trctest::MakePropertyFor(box, 0.02));
+  vtkVolume* second = scene.Add(box, OtherProperty(box, 0.015));
+  const double offset[3] = { 0.15, 0.1, 0.05 };
+  const double orientation[3] = { 30, 20, 10 };
+  Place(second, box, box, 0.8, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Azimuth(20);
+  scene.Renderer->ResetCameraClippingRange();
+  return CheckGroup(scene, "thick overlapping");
+}
 }
 
 int TestTiledRayCastOverlapping(int argc, char* argv[])
@@ -353,5 +407,7 @@ int TestTiledRayCastOverlapping(int argc, char* argv[])
   ok = TestInside(spx, spx) && ok;
   ok = TestCameraInside(box) && ok;
   ok = TestApart(torus, spx) && ok;
+  ok = TestFour(spx) && ok;
+  ok = TestThick(box) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
