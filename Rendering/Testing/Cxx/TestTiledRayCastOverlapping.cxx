@@ -17,7 +17,9 @@
 // alone.
 #include "TiledRayCastTestScene.h"
 
+#include "vtkCellData.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPointDataToCellData.h"
 #include "vtkTesting.h"
 
 #include <cstdlib>
@@ -388,6 +390,35 @@ bool TestThick(vtkUnstructuredGrid* box)
   scene.Renderer->ResetCameraClippingRange();
   return CheckGroup(scene, "thick overlapping");
 }
+
+// Empty-space skipping (a band of one volume's scalars: rays enter and leave its visible part)
+// overlapping a volume of cell scalars: each volume's own shader variants in one traversal.
+bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
+{
+  Scene scene(96);
+  double range[2];
+  fin->GetPointData()->GetScalars()->GetRange(range);
+  scene.Add(fin, trcscene::MakeBandProperty(range, 0.5, 0.1, fin->GetLength() / 20));
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(spx);
+  toCells->Update();
+  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  cells->GetPointData()->Initialize();
+  vtkSmartPointer<vtkVolumeProperty> property = OtherProperty(spx, 0.1);
+  vtkVolume* second = scene.Add(cells, property);
+  const double offset[3] = { 0.0, 0.05, 0.0 };
+  const double orientation[3] = { 0, 30, 0 };
+  Place(second, spx, fin, 0.9, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Azimuth(-40);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "band and cell scalars");
+  ok = Expect(scene.Mappers[0]->GetStatistics()->GetNumberOfVisibleTetrahedra() <
+           fin->GetNumberOfCells(),
+         "band and cell scalars: empty space skipped") &&
+    ok;
+  return ok;
+}
 }
 
 int TestTiledRayCastOverlapping(int argc, char* argv[])
@@ -395,7 +426,8 @@ int TestTiledRayCastOverlapping(int argc, char* argv[])
   vtkSmartPointer<vtkUnstructuredGrid> torus = trctest::ReadMesh(argc, argv, "torus_vistrails.vtu");
   vtkSmartPointer<vtkUnstructuredGrid> spx = trctest::ReadMesh(argc, argv, "spx_vistrails.vtu");
   vtkSmartPointer<vtkUnstructuredGrid> box = trctest::ReadMesh(argc, argv, "box5_tets.vtu");
-  if (!torus || !spx || !box)
+  vtkSmartPointer<vtkUnstructuredGrid> fin = trctest::ReadMesh(argc, argv, "bluntfin_tets.vtu");
+  if (!torus || !spx || !box || !fin)
   {
     return EXIT_FAILURE;
   }
@@ -409,5 +441,6 @@ int TestTiledRayCastOverlapping(int argc, char* argv[])
   ok = TestApart(torus, spx) && ok;
   ok = TestFour(spx) && ok;
   ok = TestThick(box) && ok;
+  ok = TestBandAndCells(fin, spx) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
