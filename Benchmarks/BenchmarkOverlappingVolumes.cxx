@@ -10,11 +10,12 @@
 =========================================================================*/
 // Overlapping volumes (docs/mapper.md, "Overlapping volumes"): the frame time of 1, 2 and 4
 // copies of a mesh, each in its own vtkVolume with its own mapper, copy i shifted by
-// i * 3 % of the mesh's diagonal along x and y and given its own transfer function (the ramp
-// with a unit distance growing with i), so that they overlap nearly everywhere and the mapper
-// integrates them in one traversal.
+// i * 3 % (--shift 0.03) of the mesh's diagonal along x and y and given its own transfer function
+// (the ramp with a unit distance growing with i), so that they overlap nearly everywhere and the
+// mapper integrates them in one traversal.
 //
-// Usage: BenchmarkOverlappingVolumes [--size N] [--frames N] [--counts 1,2,4] [--csv file]
+// Usage: BenchmarkOverlappingVolumes [--size N] [--frames N] [--counts 1,2,4] [--shift f] [--csv
+// file]
 //          mesh.vtu...
 // Each frame turns the camera by 1 degree about the focal point. Statistics are synchronous
 // (each frame's GPU times read before the next), so the wall clock includes that wait.
@@ -66,7 +67,7 @@ struct Result
   double StepsPerRay = 0;
 };
 
-Result Run(vtkUnstructuredGrid* grid, int copies, int size, int frames)
+Result Run(vtkUnstructuredGrid* grid, int copies, int size, int frames, double shift)
 {
   vtkNew<vtkRenderer> renderer;
   renderer->SetBackground(0, 0, 0);
@@ -80,7 +81,7 @@ Result Run(vtkUnstructuredGrid* grid, int copies, int size, int frames)
     vtkNew<vtkVolume> volume;
     volume->SetMapper(mapper);
     volume->SetProperty(trcscene::MakePropertyFor(grid, 0.05 * (1 + i)));
-    volume->SetPosition(0.03 * i * diagonal, 0.03 * i * diagonal, 0.0);
+    volume->SetPosition(shift * i * diagonal, shift * i * diagonal, 0.0);
     renderer->AddVolume(volume);
     mappers.push_back(mapper);
   }
@@ -133,6 +134,7 @@ int main(int argc, char* argv[])
   int size = 1024;
   int frames = 10;
   std::vector<int> counts = { 1, 2, 4 };
+  double shift = 0.03;
   std::string csv;
   std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
@@ -155,6 +157,10 @@ int main(int argc, char* argv[])
         counts.push_back(std::min(4, std::max(1, std::atoi(item.c_str()))));
       }
     }
+    else if (!std::strcmp(argv[i], "--shift") && i + 1 < argc)
+    {
+      shift = std::atof(argv[++i]);
+    }
     else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
     {
       csv = argv[++i];
@@ -167,14 +173,14 @@ int main(int argc, char* argv[])
   if (meshes.empty() || counts.empty())
   {
     std::cerr << "usage: BenchmarkOverlappingVolumes [--size N] [--frames N] [--counts 1,2,4] "
-                 "[--csv file] mesh.vtu...\n";
+                 "[--shift f] [--csv file] mesh.vtu...\n";
     return EXIT_FAILURE;
   }
   std::ofstream out;
   if (!csv.empty())
   {
     out.open(csv);
-    out << "mesh,tets,volumes,grouped,image_size,frames,first_frame_ms,wall_ms,gpu_ms,rays,"
+    out << "mesh,tets,volumes,shift,grouped,image_size,frames,first_frame_ms,wall_ms,gpu_ms,rays,"
            "mixed_rays,tets_per_ray\n";
   }
   for (const std::string& path : meshes)
@@ -191,7 +197,7 @@ int main(int argc, char* argv[])
     const std::string mesh = path.substr(path.find_last_of('/') + 1);
     for (int copies : counts)
     {
-      const Result r = Run(grid, copies, size, frames);
+      const Result r = Run(grid, copies, size, frames, shift);
       std::cout << mesh << " (" << grid->GetNumberOfCells() << " tets) x" << copies << " at "
                 << size << "^2: " << r.Grouped << " in one traversal, frame " << r.WallMs
                 << " ms wall, " << r.GpuMs << " ms GPU (first frame " << r.FirstMs << " ms), "
@@ -199,9 +205,10 @@ int main(int argc, char* argv[])
                 << " tets per ray\n";
       if (out)
       {
-        out << mesh << "," << grid->GetNumberOfCells() << "," << copies << "," << r.Grouped << ","
-            << size << "," << frames << "," << r.FirstMs << "," << r.WallMs << "," << r.GpuMs << ","
-            << r.Rays << "," << r.MixedRays << "," << r.StepsPerRay << "\n";
+        out << mesh << "," << grid->GetNumberOfCells() << "," << copies << "," << shift << ","
+            << r.Grouped << "," << size << "," << frames << "," << r.FirstMs << "," << r.WallMs
+            << "," << r.GpuMs << "," << r.Rays << "," << r.MixedRays << "," << r.StepsPerRay
+            << "\n";
       }
     }
   }
