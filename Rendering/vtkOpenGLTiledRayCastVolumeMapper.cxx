@@ -1063,42 +1063,10 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtk
 std::string vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupRefusal(
   vtkVolume* volume, bool prepared)
 {
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  vtkVolumeProperty* property = volume->GetProperty();
-  if (self->GetNumberOfInputConnections(0) == 0 || !self->GetInputDataObject(0, 0) || !property)
-  {
-    return "it has no input or property";
-  }
-  if (self->Pipeline == vtkTiledRayCastVolumeMapper::FRAGMENT_PIPELINE ||
-    (this->CheckedWindow && !this->ComputeSupported))
-  {
-    return "it uses the fragment pipeline (a group needs the compute pipeline)";
-  }
-  if (self->BlendMode != vtkVolumeMapper::COMPOSITE_BLEND)
-  {
-    return "its blend mode is not composite";
-  }
-  if (self->IntegrationMode != vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
-  {
-    return "its integration is not partial pre-integration (the default)";
-  }
-  if (self->MeshLayout != vtkTiledRayCastVolumeMapper::COMPACT_LAYOUT)
-  {
-    return "it uses the paper's mesh layout";
-  }
-  if (self->GetNumberOfClippingPlanes() > 0)
-  {
-    return "it has clipping planes";
-  }
-  if (property->GetShade())
-  {
-    return "it is shaded";
-  }
-  if (prepared && (this->Lighting.Enabled || this->GradientOpacity.Enabled))
-  {
-    return "it uses gradient opacity";
-  }
-  return std::string();
+  // What this frame found (after PrepareFrame): shading or gradient opacity in force.
+  const bool lit = prepared && (this->Lighting.Enabled || this->GradientOpacity.Enabled);
+  return vtkTiledRayCastVolumeGroup::Refusal(
+    this->Self, volume, this->CheckedWindow && !this->ComputeSupported, lit);
 }
 
 //------------------------------------------------------------------------------

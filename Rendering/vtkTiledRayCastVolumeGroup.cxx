@@ -14,7 +14,10 @@
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkRenderer.h"
+#include "vtkTiledRayCastVolumeMapper.h"
 #include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
 #include "vtkWeakPointer.h"
 
 #include <algorithm>
@@ -55,13 +58,49 @@ void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
   }
 }
 
-std::string Refusal(const std::string& reason)
+std::string Warning(const std::string& reason)
 {
   return "This volume overlaps another volume of a tiled ray-cast mapper, but " + reason +
     ": it is drawn on its own, before or after the others in VTK's order, not mixed with them "
     "where they overlap (docs/mapper.md, \"Overlapping volumes\").";
 }
 } // anonymous namespace
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastVolumeGroup::Refusal(
+  vtkTiledRayCastVolumeMapper* mapper, vtkVolume* volume, bool noCompute, bool lit)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (mapper->GetNumberOfInputConnections(0) == 0 || !mapper->GetInputDataObject(0, 0) || !property)
+  {
+    return "it has no input or property";
+  }
+  if (mapper->GetPipeline() == vtkTiledRayCastVolumeMapper::FRAGMENT_PIPELINE || noCompute)
+  {
+    return "it uses the fragment pipeline (a group needs the compute pipeline)";
+  }
+  if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    return "its blend mode is not composite";
+  }
+  if (mapper->GetIntegrationMode() != vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
+  {
+    return "its integration is not partial pre-integration (the default)";
+  }
+  if (mapper->GetMeshLayout() != vtkTiledRayCastVolumeMapper::COMPACT_LAYOUT)
+  {
+    return "it uses the paper's mesh layout";
+  }
+  if (mapper->GetNumberOfClippingPlanes() > 0)
+  {
+    return "it has clipping planes";
+  }
+  if (property->GetShade() || lit)
+  {
+    return "it is shaded or uses gradient opacity";
+  }
+  return std::string();
+}
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastVolumeGroup::Overlap(vtkVolume* a, vtkVolume* b)
@@ -109,7 +148,7 @@ std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::S
     {
       if (c.Volume != self && Overlap(self, c.Volume))
       {
-        me.Member->WarnGroupOnce(Refusal(refusal));
+        me.Member->WarnGroupOnce(Warning(refusal));
         break;
       }
     }
@@ -149,7 +188,7 @@ std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::S
   }
   if (group.size() > static_cast<size_t>(MaximumVolumes))
   {
-    me.Member->WarnGroupOnce(Refusal(std::to_string(group.size()) +
+    me.Member->WarnGroupOnce(Warning(std::to_string(group.size()) +
       " volumes overlap, directly or through others, and one traversal takes at most " +
       std::to_string(MaximumVolumes)));
     return alone;
@@ -183,7 +222,7 @@ int vtkTiledRayCastVolumeGroup::Render(
     const std::string refusal = c.Member->GetGroupRefusal(c.Volume, true);
     if (!refusal.empty())
     {
-      c.Member->WarnGroupOnce(Refusal(refusal));
+      c.Member->WarnGroupOnce(Warning(refusal));
       if (c.Member == first)
       {
         return 0;

@@ -39,6 +39,7 @@
 
 class vtkOpenGLRenderWindow;
 class vtkRenderer;
+class vtkTiledRayCastVolumeMapper;
 class vtkVolume;
 
 /**
@@ -123,6 +124,14 @@ public:
    * Whether `volume` was drawn in this frame of `renderer` by another volume's mapper.
    */
   static bool WasDrawn(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * Why `mapper`'s `volume` cannot be traversed with others (a phrase), or empty: the mapper's
+   * settings, whether its context lacks compute shaders, and whether its frame found shading
+   * or gradient opacity in force.
+   */
+  static std::string Refusal(
+    vtkTiledRayCastVolumeMapper* mapper, vtkVolume* volume, bool noCompute, bool lit);
 
   /**
    * Whether two volumes' world bounds meet.
