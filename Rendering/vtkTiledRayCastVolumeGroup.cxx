@@ -123,6 +123,17 @@ bool vtkTiledRayCastVolumeGroup::Overlap(vtkVolume* a, vtkVolume* b)
 std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::Select(
   const std::vector<Candidate>& candidates, vtkVolume* self)
 {
+  // A mapper drawing several volumes holds one frame's state: those volumes are drawn alone.
+  auto shared = [&candidates](const Candidate& c)
+  {
+    return std::count_if(candidates.begin(), candidates.end(),
+             [&c](const Candidate& o) { return o.Member == c.Member; }) > 1;
+  };
+  auto refusal = [&shared](const Candidate& c)
+  {
+    return shared(c) ? std::string("its mapper draws another volume too")
+                     : c.Member->GetGroupRefusal(c.Volume, false);
+  };
   std::vector<Candidate> alone;
   std::vector<Candidate> eligible;
   for (const Candidate& c : candidates)
@@ -131,7 +142,7 @@ std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::S
     {
       alone.push_back(c);
     }
-    if (c.Member->GetGroupRefusal(c.Volume, false).empty())
+    if (refusal(c).empty())
     {
       eligible.push_back(c);
     }
@@ -141,14 +152,14 @@ std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::S
     return alone;
   }
   const Candidate me = alone.front();
-  const std::string refusal = me.Member->GetGroupRefusal(self, false);
-  if (!refusal.empty())
+  const std::string reason = refusal(me);
+  if (!reason.empty())
   {
     for (const Candidate& c : candidates)
     {
       if (c.Volume != self && Overlap(self, c.Volume))
       {
-        me.Member->WarnGroupOnce(Warning(refusal));
+        me.Member->WarnGroupOnce(Warning(reason));
         break;
       }
     }

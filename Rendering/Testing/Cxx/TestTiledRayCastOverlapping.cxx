@@ -457,6 +457,29 @@ bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
     ok;
   return ok;
 }
+
+// One mapper for two overlapping volumes (VTK allows it): the mapper holds one frame's state,
+// so they are drawn one by one as before, with one warning.
+bool TestSharedMapper(vtkUnstructuredGrid* spx)
+{
+  Scene scene(64);
+  scene.Add(spx, trctest::MakePropertyFor(spx, 0.1));
+  auto second = vtkSmartPointer<vtkVolume>::New();
+  second->SetMapper(scene.Mappers[0]);
+  second->SetProperty(OtherProperty(spx, 0.1));
+  const double offset[3] = { 0.1, 0.0, 0.0 };
+  const double orientation[3] = { 0, 30, 0 };
+  Place(second, spx, spx, 0.8, offset, orientation);
+  scene.Renderer->AddVolume(second);
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  scene.Window->Render();
+  bool ok = Expect(scene.Mappers[0]->GetStatistics()->GetRendered() &&
+      scene.Mappers[0]->GetStatistics()->GetNumberOfGroupedVolumes() == 1,
+    "shared mapper: no group");
+  ok = Expect(GroupWarnings(scene.Warnings) == 1, "shared mapper: one warning") && ok;
+  return ok;
+}
 }
 
 int TestTiledRayCastOverlapping(int argc, char* argv[])
@@ -480,5 +503,6 @@ int TestTiledRayCastOverlapping(int argc, char* argv[])
   ok = TestFour(spx) && ok;
   ok = TestThick(box) && ok;
   ok = TestBandAndCells(fin, spx) && ok;
+  ok = TestSharedMapper(spx) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
