@@ -17,9 +17,12 @@
 // alone.
 #include "TiledRayCastTestScene.h"
 
+#include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkPointDataToCellData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
 #include "vtkTesting.h"
 
 #include <cstdlib>
@@ -238,6 +241,21 @@ bool TestTwo(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
   scene.Renderer->GetActiveCamera()->Elevation(25);
   scene.Renderer->ResetCameraClippingRange();
   bool ok = CheckGroup(scene, "two overlapping");
+
+  // An opaque sphere in the overlap ends every volume's rays at its surface (the scene's depth,
+  // which the volumes share).
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(second->GetCenter());
+  sphere->SetRadius(0.12 * torus->GetLength());
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(sphereMapper);
+  scene.Renderer->AddActor(ball);
+  ok = CheckGroup(scene, "two overlapping, an opaque sphere") && ok;
+  scene.Renderer->RemoveActor(ball);
 
   // Drawn one after the other: the error of compositing overlapping volumes in VTK's order.
   scene.Mappers[1]->SetPipelineToFragment();
