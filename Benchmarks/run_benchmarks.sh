@@ -94,20 +94,26 @@ case "$kind" in
     ;;
   overlapping)
     # Overlapping volumes (BenchmarkOverlappingVolumes): 1, 2 and 4 copies of bluntfin, post_tets6
-    # and torus_1m, each copy shifted by 3 % of the diagonal, integrated in one traversal, at
+    # and torus_1m, integrated in one traversal, at
     # TRC_OVERLAPPING_SIZE (1024; here on llvmpipe 256 and TRC_OVERLAPPING_MESHES=bluntfin).
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
     files=()
     for m in ${TRC_OVERLAPPING_MESHES:-bluntfin post torus_1m}; do
       case "$m" in
         bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
         post) files+=("$meshes/post_tets6_conforming.vtu") ;;
-        torus_1m) files+=("$out/ladder/torus_1m.vtu") ;;
+        torus_1m)
+          "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m \
+            --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+          files+=("$out/ladder/torus_1m.vtu") ;;
       esac
     done
-    "$build/Benchmarks/BenchmarkOverlappingVolumes" --size "${TRC_OVERLAPPING_SIZE:-1024}" \
-      --frames "${TRC_OVERLAPPING_FRAMES:-20}" --counts 1,2,4 --csv "$out/overlapping.csv" \
-      "${files[@]}"
+    # Shifted by 3 % of the diagonal per copy (nearly every ray through a mixture), then by 30 %
+    # (the copies overlap in part: most rays cross one copy at a time).
+    for shift in ${TRC_OVERLAPPING_SHIFTS:-0.03 0.3}; do
+      "$build/Benchmarks/BenchmarkOverlappingVolumes" --size "${TRC_OVERLAPPING_SIZE:-1024}" \
+        --frames "${TRC_OVERLAPPING_FRAMES:-20}" --counts 1,2,4 --shift "$shift" \
+        --csv "$out/overlapping-$shift.csv" "${files[@]}"
+    done
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;
