@@ -123,22 +123,3 @@ int trcMemberPassNodes(bool used, float sf, float sb, int next, float u1)
   }
   return next;
 }
-
-// The volume's own walk (vtkTiledRayCastWalk.glsl) along its ray up to lambda `until`: where
-// no other volume is present, the ray goes on exactly as it would alone, in the walk's own
-// loop (the statuses of the walk: TRC_WAITING, TRC_DONE_DEPTH at `until`, TRC_DONE_OPAQUE,
-// TRC_ACTIVE after maximumSteps).
-int trcMemberWalk(vec3 origin, vec3 dir, float worldScale, float until, int maximumSteps,
-  inout uint tet, inout float lambda, inout int entry, inout int stalls, inout vec4 color,
-  inout int steps)
-{
-  TrcRay ray;
-  ray.origin = origin;
-  ray.dir = dir;
-  ray.wNear = 1.0;
-  ray.wFar = 1.0;
-  ray.lambdaMin = -3.4e38; // no clipping planes in a group
-  ray.lambdaMax = until;
-  ray.worldScale = worldScale;
-  return trcWalk(ray, maximumSteps, tet, lambda, entry, stalls, color, steps);
-}

@@ -59,10 +59,6 @@ shared uint trcGroupIncomplete;
 shared uint trcGroupMixed;
 
 const int TRC_GROUP_MAXIMUM_STALLS = 64; // as TRC_MAXIMUM_STALLS of the walk
-// The walk's statuses (TRC_ACTIVE ... of vtkTiledRayCastCommonFS.glsl).
-const int TRC_GROUP_ACTIVE = 1;
-const int TRC_GROUP_DONE_DEPTH = 3;
-const int TRC_GROUP_DONE_OPAQUE = 4;
 const uint TRC_GROUP_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 const float TRC_GROUP_FAR = 3.4e38;
 // Parts of a mixture are cut into panels of at most this optical depth, each integrated with
@@ -91,13 +87,9 @@ bool trcGroupNext(int m, uvec4 words, int exitFace, inout uint tet, inout int en
   return inside;
 }
 
-int trcGroupWalk(int m, vec3 origin, vec3 dir, float worldScale, float until, int maximumSteps,
-  inout uint tet, inout float lambda, inout int entry, inout int stalls, inout vec4 color,
-  inout int steps)
+void trcGroupIntegrate(int m, float sf, float sb, float d, inout vec4 color)
 {
-  int status = TRC_GROUP_ACTIVE;
-//TRC::EachMember if (m == @) status = trcMemberWalk_v@(origin, dir, worldScale, until, maximumSteps, tet, lambda, entry, stalls, color, steps);
-  return status;
+//TRC::EachMember if (m == @) trcIntegrate_v@(sf, sb, d, color);
 }
 
 //------------------------------------------------------------------------------
@@ -334,86 +326,47 @@ void main()
       {
         break;
       }
-      if (count == 1)
+      // Integrate up to the event (or the end of the ray) with the volumes inside, each from
+      // where it is to there in its own lambda (its own exit exactly, when the event is that).
+      float end = min(event, muMax);
+      if (count > 0 && end > mu)
       {
-        // One volume present until another enters (or the ray ends): its own walk, exactly as
-        // alone, up to there.
-        int a = alone;
-        float limit = muMax;
-        int next = -1;
+        float to[TRC_GROUP_MEMBERS];
         for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
         {
-          float at = entryLambda[k] - lambdaNear[k];
-          if (k != a && pending[k] && at < limit)
+          to[k] = from[k];
+          if (inside[k])
           {
-            limit = at;
-            next = k;
+            to[k] = k == m && end == event ? exitAt[k] : min(exitAt[k], end + lambdaNear[k]);
+            to[k] = max(to[k], from[k]);
+            sf[k] = dot(field[k].xyz, origin[k] + from[k] * dir[k]) + field[k].w;
+            sb[k] = dot(field[k].xyz, origin[k] + to[k] * dir[k]) + field[k].w;
           }
         }
-        int taken = 0;
-        int status = trcGroupWalk(a, origin[a], dir[a], worldScale[a],
-          next < 0 ? lambdaMax[a] : limit + lambdaNear[a], max(in_maximumSteps - layerSteps[a], 1),
-          tet[a], from[a], entry[a], stalls[a], color, taken);
-        // The walk takes the tet it starts in again: counted already.
-        steps += max(taken - 1, 0);
-        layerSteps[a] += max(taken - 1, 0);
-        if (status == TRC_GROUP_DONE_OPAQUE)
+        if (count == 1)
         {
-          opaque = true;
-          break;
+          // One volume: its own integration, exactly as its own walk does.
+          trcGroupIntegrate(
+            alone, sf[alone], sb[alone], (to[alone] - from[alone]) * worldScale[alone], color);
         }
-        if (status != TRC_GROUP_DONE_DEPTH)
+        else
         {
-          // It left its (visible) mesh, or took the most steps a layer may: its next entry.
-          stopped = stopped || status == TRC_GROUP_ACTIVE;
-          inside[a] = false;
-          mu = from[a] - lambdaNear[a];
-          pending[a] = trcGroupNextEntry(head, uint(a), false, from[a], lastLambda[a],
-                         lastKey[a], entryLambda[a], entryKey[a], entryNear[a]) != 0u;
-          entryLambda[a] = max(entryLambda[a], from[a]);
-          continue;
-        }
-        if (next < 0)
-        {
-          break; // the end of the ray
-        }
-        // Stopped where volume `next` enters, inside tet[a]: where it leaves that tet now.
-        exitAt[a] = trcGroupExit(
-          a, origin[a], dir[a], tet[a], entry[a], from[a], exitFace[a], field[a], words[a]);
-        m = next;
-        event = limit;
-      }
-      else
-      {
-        // Two or more volumes: their mixture up to the event (or the end of the ray), each
-        // from where it is to there in its own lambda (its own exit exactly, when the event is
-        // that).
-        float end = min(event, muMax);
-        if (count > 1 && end > mu)
-        {
-          for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
-          {
-            if (inside[k])
-            {
-              float to = k == m && end == event ? exitAt[k] : min(exitAt[k], end + lambdaNear[k]);
-              to = max(to, from[k]);
-              sf[k] = dot(field[k].xyz, origin[k] + from[k] * dir[k]) + field[k].w;
-              sb[k] = dot(field[k].xyz, origin[k] + to * dir[k]) + field[k].w;
-              from[k] = to;
-            }
-          }
           trcGroupMixture(inside, sf, sb, (end - mu) * worldScale[alone], color);
           mixed = true;
         }
-        if (color.a >= in_groupEarlyTermination)
+        for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
         {
-          opaque = true;
-          break;
+          from[k] = to[k];
         }
-        if (event >= muMax)
-        {
-          break;
-        }
+      }
+      if (color.a >= in_groupEarlyTermination)
+      {
+        opaque = true;
+        break;
+      }
+      if (event >= muMax)
+      {
+        break;
       }
       mu = max(mu, event);
       // Volume m moves on: to the next tet, to its next entry (the one-volume traversal's
