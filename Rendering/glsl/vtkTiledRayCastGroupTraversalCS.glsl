@@ -281,7 +281,19 @@ void main()
     for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
     {
       muMax = min(muMax, lambdaMax[m] - lambdaNear[m]);
+      // Every state word defined before it is read (a volume that never enters keeps these).
       inside[m] = false;
+      tet[m] = 0u;
+      entry[m] = -1;
+      from[m] = 0.0;
+      exitAt[m] = 0.0;
+      exitFace[m] = 0;
+      field[m] = vec4(0.0);
+      words[m] = uvec4(0u);
+      layerSteps[m] = 0;
+      stalls[m] = 0;
+      sf[m] = 0.0;
+      sb[m] = 0.0;
       lastLambda[m] = 0.0;
       lastKey[m] = 0u;
       pending[m] = trcGroupNextEntry(head, uint(m), true, 0.0, 0.0, 0u, entryLambda[m],
