@@ -8,12 +8,13 @@
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
 # "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
 # moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame); "empty"
-# band and spike transfer functions with and without empty-space skipping.
+# band and spike transfer functions with and without empty-space skipping; "overlapping" 1, 2
+# and 4 overlapping copies of a mesh drawn in one traversal (BenchmarkOverlappingVolumes).
 # On the GPU, 20 views a turn (18 degrees apart): an interactive rotation. At 10 (36 degrees) every
 # frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming or empty}"
+kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming, empty or overlapping}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -87,6 +88,31 @@ case "$kind" in
                "${TRC_EMPTY_FRAMES:-20}" --csv "$out/empty.csv" "$f" ;;
         esac
       done
+    done
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  overlapping)
+    # Overlapping volumes (BenchmarkOverlappingVolumes): 1, 2 and 4 copies of bluntfin, post_tets6
+    # and torus_1m, integrated in one traversal, at
+    # TRC_OVERLAPPING_SIZE (1024; here on llvmpipe 256 and TRC_OVERLAPPING_MESHES=bluntfin).
+    files=()
+    for m in ${TRC_OVERLAPPING_MESHES:-bluntfin post torus_1m}; do
+      case "$m" in
+        bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
+        post) files+=("$meshes/post_tets6_conforming.vtu") ;;
+        torus_1m)
+          "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m \
+            --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+          files+=("$out/ladder/torus_1m.vtu") ;;
+      esac
+    done
+    # Shifted by 3 % of the diagonal per copy (nearly every ray through a mixture), then by 30 %
+    # (the copies overlap in part: most rays cross one copy at a time).
+    for shift in ${TRC_OVERLAPPING_SHIFTS:-0.03 0.3}; do
+      "$build/Benchmarks/BenchmarkOverlappingVolumes" --size "${TRC_OVERLAPPING_SIZE:-1024}" \
+        --frames "${TRC_OVERLAPPING_FRAMES:-20}" --counts 1,2,4 --shift "$shift" \
+        --csv "$out/overlapping-$shift.csv" "${files[@]}"
     done
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"

@@ -47,6 +47,8 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfRaysTerminatedEarly = 0;
   this->NumberOfEntries = 0;
   this->NumberOfIncompleteRays = 0;
+  this->NumberOfGroupedVolumes = 0;
+  this->NumberOfMixedRays = 0;
   this->NumberOfSteps = 0;
   this->MaximumStepsPerRay = 0;
   this->MeshBuildTime = 0;
@@ -104,6 +106,11 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
     {
       text << " (" << this->NumberOfIncompleteRays << " rays incomplete)";
     }
+    if (this->NumberOfGroupedVolumes > 1)
+    {
+      text << ", " << this->NumberOfGroupedVolumes << " overlapping volumes in one traversal ("
+           << this->NumberOfMixedRays << " rays through their mixture)";
+    }
     text << ", " << this->NumberOfLayers << " layers, " << this->NumberOfTiles << " tiles ("
          << this->NumberOfTilesSkipped << " empty)";
   }
@@ -154,6 +161,8 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Pipeline: " << (this->Pipeline ? this->Pipeline : "(none)") << "\n";
   os << indent << "NumberOfEntries: " << this->NumberOfEntries << "\n";
   os << indent << "NumberOfIncompleteRays: " << this->NumberOfIncompleteRays << "\n";
+  os << indent << "NumberOfGroupedVolumes: " << this->NumberOfGroupedVolumes << "\n";
+  os << indent << "NumberOfMixedRays: " << this->NumberOfMixedRays << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "MaximumStepsPerRay: " << this->MaximumStepsPerRay << "\n";
   os << indent << "FirstHitTime: " << this->FirstHitTime << "\n";

@@ -156,6 +156,21 @@ public:
 
   ///@{
   /**
+   * Overlapping volumes (docs/mapper.md, "Overlapping volumes"): how many volumes this frame's
+   * traversal integrated together (1 for a volume drawn alone; the same count in the statistics
+   * of every volume of a group, whose first mapper drew them all), and the rays that met a
+   * mixture of two or more of them (compute pipeline, counted as the other ray counts: with a
+   * later frame, or at once with SynchronousStatistics; only in the statistics of the mapper
+   * that drew the group).
+   */
+  vtkSetMacro(NumberOfGroupedVolumes, int);
+  vtkGetMacro(NumberOfGroupedVolumes, int);
+  vtkSetMacro(NumberOfMixedRays, vtkIdType);
+  vtkGetMacro(NumberOfMixedRays, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Compute pipeline: the tetrahedra the rays walked: in all, per ray on average and the most
    * of any ray.
    */
@@ -314,6 +329,8 @@ protected:
   char* Pipeline = nullptr;
   vtkIdType NumberOfEntries = 0;
   vtkIdType NumberOfIncompleteRays = 0;
+  int NumberOfGroupedVolumes = 0;
+  vtkIdType NumberOfMixedRays = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;
   double FirstHitTime = -1;

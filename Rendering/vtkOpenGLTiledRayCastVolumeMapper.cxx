@@ -39,10 +39,12 @@
 #include "vtkTiledRayCastTransferFunction.h"
 #include "vtkTiledRayCastUniforms.h"
 #include "vtkTiledRayCastVisibleMesh.h"
+#include "vtkTiledRayCastVolumeGroup.h"
 #include "vtkTiledRayCastWarnings.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
+#include "vtkVolumeCollection.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
@@ -83,7 +85,7 @@ void Activate(vtkTextureObject* texture, bool activate)
 } // anonymous namespace
 
 //------------------------------------------------------------------------------
-class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastProgramSetup
+class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastGroupMember
 {
 public:
   explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
@@ -133,6 +135,26 @@ public:
   // Warnings given once, errors once until they change.
   vtkTiledRayCastWarnings Warnings;
   bool WarnedClippingPlanes = false;
+  bool WarnedGroup = false;
+
+  // Overlapping volumes (vtkTiledRayCastVolumeGroup): the volumes this mapper draws in this
+  // frame's traversal (empty when it draws its own alone), and how many were drawn together.
+  std::vector<vtkTiledRayCastGroupMember*> Group;
+  int GroupSize = 1;
+  // vtkTiledRayCastGroupMember (vtkOpenGLTiledRayCastVolumeMapperGroup.cxx... below).
+  std::string GetGroupRefusal(vtkVolume* volume, bool prepared) override;
+  bool PrepareGroupFrame(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window,
+    bool draws, int rays[2]) override;
+  vtkTiledRayCastComputePipeline::Replacements GetGroupCode() override;
+  vtkTiledRayCastComputePipeline::Member GetGroupMember() override;
+  void ActivateGroupTextures(bool activate) override;
+  bool DrawGroup(vtkOpenGLRenderWindow* window, const int rays[2],
+    const std::vector<vtkTiledRayCastGroupMember*>& members) override;
+  void FinishGroupFrame(int volumes) override;
+  void WarnGroupOnce(const std::string& text) override;
+  // The group of this mapper's volume in the renderer (itself alone where it overlaps none).
+  std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindGroup(vtkRenderer* ren, vtkVolume* vol);
+  vtkTiledRayCastShaderComposition::Inputs ProgramInputs(vtkOpenGLRenderWindow* window);
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
@@ -207,9 +229,10 @@ public:
     return this->Warnings.CheckBlendMode(this->Self->BlendMode, this->UseCompute);
   }
   // The CPU work of a frame (only what changed) and the GPU resources it needs; false when
-  // nothing is drawn. Sets the number of rays along x and y.
+  // nothing is drawn. Sets the number of rays along x and y. Without `targets` (a volume drawn
+  // by another's mapper) no per-pixel targets.
   bool PrepareFrame(vtkRenderer* ren, vtkVolume* vol, vtkDataObject* input,
-    vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2]);
+    vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2], bool targets = true);
   // The GPU work of a frame, in the OpenGL state it restores.
   bool DrawFrame(vtkOpenGLRenderWindow* window, const int rays[2]);
   void WarnAfterFrame();
@@ -291,6 +314,24 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
   std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
+  if (!this->Group.empty())
+  {
+    // Overlapping volumes in one traversal: every volume's entries, their sums for the list.
+    frame.NumberOfBoundaryFaces = 0;
+    frame.NumberOfTetrahedra = 0;
+    vtkIdType tets = 0; // the most of one volume: a layer's walk crosses one volume's tets
+    for (vtkTiledRayCastGroupMember* member : this->Group)
+    {
+      frame.Members.push_back(member->GetGroupMember());
+      frame.NumberOfBoundaryFaces += frame.Members.back().NumberOfBoundaryFaces;
+      frame.NumberOfTetrahedra += frame.Members.back().NumberOfTetrahedra;
+      tets = std::max(tets, frame.Members.back().NumberOfTetrahedra);
+    }
+    frame.MaximumSteps = static_cast<int>(std::min<vtkIdType>(tets + 1024, VTK_INT_MAX));
+    frame.OpaqueDepthUnit = this->OpaqueDepth.GetTexture()->GetTextureUnit();
+    frame.EarlyTerminationOpacity =
+      static_cast<float>(this->Self->GetEarlyRayTerminationOpacity());
+  }
 
   std::string error;
   if (!this->Compute.Render(frame, *this, this->Timers, stats, error))
@@ -383,7 +424,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateVisibleMesh(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
+vtkTiledRayCastShaderComposition::Inputs
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ProgramInputs(vtkOpenGLRenderWindow* window)
 {
   vtkTiledRayCastShaderComposition::Inputs inputs;
   inputs.Window = window;
@@ -395,6 +437,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
   inputs.Shading = this->Lighting.Enabled;
   inputs.GradientOpacity = this->GradientOpacity.Enabled;
   inputs.SkipEmptySpace = this->VisibleMesh.GetSkipsEmptySpace();
+  return inputs;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRenderWindow* window)
+{
+  const vtkTiledRayCastShaderComposition::Inputs inputs = this->ProgramInputs(window);
   if (!this->Composition.Changed(inputs))
   {
     return true; // the programs of these inputs are built
@@ -466,6 +515,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
   }
   this->Integration.ActivateTextures(this->IntegrationMode(), activate);
   this->VisibleMesh.ActivateTextures(activate);
+  for (size_t i = 1; i < this->Group.size(); ++i)
+  {
+    this->Group[i]->ActivateGroupTextures(activate);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -543,7 +596,8 @@ int vtkOpenGLTiledRayCastVolumeMapper::IsRenderSupported(
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* ren, vtkVolume* vol,
-  vtkDataObject* input, vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2])
+  vtkDataObject* input, vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2],
+  bool targets)
 {
   // CPU work: only what changed.
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
@@ -583,7 +637,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, this->FrameSampleDistance, rays);
   if (!this->UploadMesh(window) || !this->UpdateTransferFunction(property, window) ||
     !this->UpdateVisibleMesh(window) || !this->UpdatePrograms(window) ||
-    !this->UpdateTargets(window, rays[0], rays[1]))
+    (targets && !this->UpdateTargets(window, rays[0], rays[1])))
   {
     return false;
   }
@@ -666,8 +720,150 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnAfterFrame()
 }
 
 //------------------------------------------------------------------------------
+// Overlapping volumes (vtkTiledRayCastVolumeGroup): what a group needs of this mapper.
+std::vector<vtkTiledRayCastVolumeGroup::Candidate>
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtkVolume* vol)
+{
+  // The visible volumes of our mappers in this renderer, in its order (the others' internals
+  // are reachable here: they are this class's).
+  std::vector<vtkTiledRayCastVolumeGroup::Candidate> candidates;
+  vtkVolumeCollection* volumes = ren->GetVolumes();
+  vtkCollectionSimpleIterator it;
+  volumes->InitTraversal(it);
+  while (vtkVolume* volume = volumes->GetNextVolume(it))
+  {
+    auto* mapper = vtkOpenGLTiledRayCastVolumeMapper::SafeDownCast(volume->GetMapper());
+    if (mapper && (volume == vol || volume->GetVisibility()))
+    {
+      candidates.push_back({ volume, mapper->Impl });
+    }
+  }
+  if (candidates.size() < 2)
+  {
+    return {};
+  }
+  return vtkTiledRayCastVolumeGroup::Select(candidates, vol);
+}
+
+//------------------------------------------------------------------------------
+std::string vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupRefusal(
+  vtkVolume* volume, bool prepared)
+{
+  // What this frame found (after PrepareFrame): shading or gradient opacity in force.
+  const bool lit = prepared && (this->Lighting.Enabled || this->GradientOpacity.Enabled);
+  return vtkTiledRayCastVolumeGroup::Refusal(
+    this->Self, volume, this->Context.Window && !this->Context.ComputeSupported, lit);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(vtkRenderer* ren,
+  vtkVolume* vol, vtkOpenGLRenderWindow* window, bool draws, int rays[2])
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  if (!draws)
+  {
+    // Drawn by another mapper: this frame's statistics start here, not in Render().
+    self->Timer->StartTimer();
+    self->Statistics->ResetFrameCounts();
+    self->ResourceCallback->RegisterGraphicsResources(window);
+    if (!this->CheckContext(window) || !this->ChoosePipeline())
+    {
+      return false;
+    }
+  }
+  int width = 0, height = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);
+  this->Viewport[2] = width;
+  this->Viewport[3] = height;
+  int own[2];
+  // The group's mixture reads every volume's transfer-function nodes.
+  this->Integration.SetForcePartial(true);
+  if (!this->UseCompute ||
+    !this->PrepareFrame(ren, vol, self->GetInputDataObject(0, 0), vol->GetProperty(), window,
+      draws ? rays : own, draws))
+  {
+    return false;
+  }
+  // One image for the group: the first volume's rays.
+  std::copy(rays, rays + 2, this->ImageSize);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastComputePipeline::Replacements
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupCode()
+{
+  return vtkTiledRayCastShaderComposition::Compose(
+    this->ProgramInputs(this->Context.Window), this->VisibleMesh.GetShaderDefinitions());
+}
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastComputePipeline::Member
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupMember()
+{
+  vtkTiledRayCastComputePipeline::Member member;
+  member.Setup = this;
+  member.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
+  member.NumberOfTetrahedra = this->Mesh.NumberOfTets;
+  member.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
+  member.Mirrored = this->Geometry.Mirrored;
+  return member;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateGroupTextures(bool activate)
+{
+  this->MeshTextures.ActivateTextures(activate);
+  this->Integration.ActivateTextures(this->IntegrationMode(), activate);
+  this->VisibleMesh.ActivateTextures(activate);
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawGroup(vtkOpenGLRenderWindow* window,
+  const int rays[2], const std::vector<vtkTiledRayCastGroupMember*>& members)
+{
+  std::vector<vtkTiledRayCastComputePipeline::Replacements> code;
+  for (vtkTiledRayCastGroupMember* member : members)
+  {
+    code.push_back(member->GetGroupCode());
+  }
+  std::string error;
+  if (!this->Compute.UpdateGroupPrograms(window, code, error))
+  {
+    this->ReportError(error + " The volumes are drawn one by one.");
+    return false;
+  }
+  this->Group = members;
+  const bool ok = this->DrawFrame(window, rays);
+  this->Group.clear();
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishGroupFrame(int volumes)
+{
+  this->GroupSize = volumes;
+  this->Self->Statistics->SetPipeline("Compute");
+  this->Self->FinishRender(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnGroupOnce(const std::string& text)
+{
+  if (!this->WarnedGroup)
+  {
+    vtkWarningWithObjectMacro(this->Self, << text);
+    this->WarnedGroup = true;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
+  if (vtkTiledRayCastVolumeGroup::WasDrawn(ren, vol))
+  {
+    return; // drawn with the volumes it overlaps, by the first of their mappers
+  }
   this->Timer->StartTimer();
   this->Statistics->ResetFrameCounts();
   vtkInternals* impl = this->Impl;
@@ -728,6 +924,16 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
+  // Overlapping volumes of our mappers: the first drawn draws them all in one traversal.
+  impl->GroupSize = vtkTiledRayCastVolumeGroup::Render(ren, window, impl->FindGroup(ren, vol));
+  if (impl->GroupSize > 1)
+  {
+    impl->WarnAfterFrame();
+    this->FinishRender(impl->Compute.GetTargetBytes() + 4 * static_cast<vtkIdType>(width) * height);
+    return;
+  }
+  impl->GroupSize = 1;
+  impl->Integration.SetForcePartial(false);
   int rays[2];
   if (!impl->PrepareFrame(ren, vol, input, property, window, rays) ||
     !impl->DrawFrame(window, rays))
@@ -750,6 +956,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetRendered(true);
   stats->SetImageSize(impl->ImageSize);
+  stats->SetNumberOfGroupedVolumes(impl->GroupSize);
   stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
   const vtkIdType meshBytes = impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes();

@@ -45,9 +45,9 @@ const unsigned int ColorImageUnit = 1;
 const unsigned int NodesBinding = 0;
 const unsigned int EntryCountBinding = 1;
 const unsigned int RayCountsBinding = 2;
-// Words per entry node (lambda, key, link), and the traversal's workgroup size in pixels
-// (local_size_x and local_size_y of vtkTiledRayCastTraversalCS.glsl).
-const vtkIdType WordsPerEntry = 3;
+// The traversal's workgroup size in pixels (local_size_x and local_size_y of
+// vtkTiledRayCastTraversalCS.glsl). An entry node is 3 words (lambda, key, link), 4 in a group
+// of overlapping volumes (and the volume).
 const int GroupWidth = 8;
 const int GroupHeight = 4;
 
@@ -65,6 +65,7 @@ enum RayCount
   CountEmptyGroups,
   CountIncomplete,
   CountEntriesAsked, // copied from the entry count after the traversal
+  CountMixedRays,    // rays through overlapping volumes' mixtures (groups only)
   NumberOfRayCounts
 };
 
@@ -173,19 +174,63 @@ bool vtkTiledRayCastComputePipeline::ReadyRaster(vtkOpenGLRenderWindow* window,
 }
 
 //------------------------------------------------------------------------------
-bool vtkTiledRayCastComputePipeline::UpdatePrograms(
-  vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error)
+vtkTiledRayCastComputePipeline::Replacements vtkTiledRayCastComputePipeline::ProgramReplacements(
+  const Replacements& common, bool group)
 {
   // Every program of this pipeline is GLSL 4.30 with the entry list in place of the fragment
-  // pipeline's render-target outputs.
+  // pipeline's render-target outputs; a group's entries say whose they are.
   Replacements replacements = common;
-  replacements.emplace_back("//TRC::Version", "#version 430 core\n#define TRC_ENTRY_LIST\n");
+  replacements.emplace_back("//TRC::Version",
+    group ? "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n"
+          : "#version 430 core\n#define TRC_ENTRY_LIST\n");
   replacements.emplace_back("//TRC::EntryList::Dec", vtkTiledRayCastEntryList);
   replacements.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
   for (const char* tag : { "//TRC::Peel::Dec", "//TRC::Peel::Early", "//TRC::Peel::Impl" })
   {
     replacements.emplace_back(tag, std::string());
   }
+  return replacements;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
+  vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error)
+{
+  if (members.size() > static_cast<size_t>(vtkTiledRayCastGroupTraversal::MaximumMembers))
+  {
+    error = "A group of overlapping volumes has at most 4 volumes.";
+    return false;
+  }
+  for (size_t k = 0; k < members.size(); ++k)
+  {
+    const Replacements replacements = ProgramReplacements(members[k], true);
+    if (!this->ReadyRaster(window, this->GroupFaces[k],
+          Substituted(vtkTiledRayCastBoundaryFaceVS, replacements),
+          Substituted(vtkTiledRayCastBoundaryFaceFS, replacements), std::string(), error) ||
+      !this->ReadyRaster(window, this->GroupSlices[k],
+        Substituted(vtkTiledRayCastNearSliceVS, replacements),
+        Substituted(vtkTiledRayCastNearSliceFS, replacements),
+        Substituted(vtkTiledRayCastNearSliceGS, replacements), error))
+    {
+      return false;
+    }
+  }
+  const Replacements replacements = ProgramReplacements(members.front(), true);
+  if (!this->ReadyRaster(window, this->CompositeProgram,
+        Substituted(vtkTiledRayCastQuadVS, replacements),
+        Substituted(vtkTiledRayCastCompositeFS, replacements), std::string(), error))
+  {
+    return false;
+  }
+  return this->Group.Update(
+    members, "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::UpdatePrograms(
+  vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error)
+{
+  const Replacements replacements = ProgramReplacements(common, false);
   const std::string faceVS = Substituted(vtkTiledRayCastBoundaryFaceVS, replacements);
   if (!this->ReadyRaster(window, this->FacesProgram, faceVS,
         Substituted(vtkTiledRayCastBoundaryFaceFS, replacements), std::string(), error) ||
@@ -307,11 +352,11 @@ bool vtkTiledRayCastComputePipeline::GrowEntries(vtkIdType needed, std::string& 
     return false;
   }
   capacity = std::min(capacity, limit);
-  if (!this->EntryNodes.Allocate(static_cast<size_t>(capacity * WordsPerEntry * 4)))
+  if (!this->EntryNodes.Allocate(static_cast<size_t>(capacity * this->EntryWords * 4)))
   {
     this->EntryCapacity = 0;
     error = "The GPU ran out of memory for the list of ray entries (" + std::to_string(needed) +
-      " entries of 12 bytes). Nothing is drawn.";
+      " entries of " + std::to_string(4 * this->EntryWords) + " bytes). Nothing is drawn.";
     return false;
   }
   this->EntryCapacity = capacity;
@@ -358,6 +403,17 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   }
   this->CountsBuffer = next;
 
+  // A group's list has a fourth word per entry: the list is allocated again when that changes.
+  const vtkIdType words = frame.Members.empty() ? 3 : 4;
+  if (words != this->EntryWords)
+  {
+    this->EntryWords = words;
+    this->EntryCapacity = 0;
+    if (!this->GrowEntries(static_cast<vtkIdType>(frame.Width) * frame.Height, error))
+    {
+      return false;
+    }
+  }
   // A frame is verified (its counts read before Render() returns, the list grown and the
   // frame drawn again if it did not hold the view) when asked, when nothing is known yet of
   // what this mesh asks for at this image size, and on a camera jump: the bounds cover a
@@ -391,9 +447,7 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
 void vtkTiledRayCastComputePipeline::ListEntries(
   const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
-  vtkOpenGLRenderWindow* window = frame.Window;
-  vtkOpenGLState* state = window->GetState();
-  vtkOpenGLShaderCache* cache = window->GetShaderCache();
+  vtkOpenGLState* state = frame.Window->GetState();
   state->PushDrawFramebufferBinding();
   this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
   vtkOpenGLState::ScopedglColorMask colorMask(state);
@@ -403,35 +457,86 @@ void vtkTiledRayCastComputePipeline::ListEntries(
 
   this->EntryCount.Write(0, sizeof(std::uint32_t));
   this->BindBuffers();
+  if (frame.Members.empty())
+  {
+    Member alone;
+    alone.NumberOfBoundaryFaces = frame.NumberOfBoundaryFaces;
+    alone.NumberOfTetrahedra = frame.NumberOfTetrahedra;
+    alone.NearPlaneCutsMesh = frame.NearPlaneCutsMesh;
+    alone.Mirrored = frame.Mirrored;
+    this->ListMemberEntries(
+      frame, alone, this->FacesProgram, this->NearSliceProgram, setup, false, 0);
+  }
+  for (size_t k = 0; k < frame.Members.size(); ++k)
+  {
+    const Member& member = frame.Members[k];
+    this->ListMemberEntries(
+      frame, member, this->GroupFaces[k], this->GroupSlices[k], *member.Setup, true, int(k));
+  }
+  vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
+    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  state->PopDrawFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const Member& member,
+  RasterProgram& faces, RasterProgram& slices, vtkTiledRayCastProgramSetup& setup, bool group,
+  int index)
+{
+  vtkOpenGLState* state = frame.Window->GetState();
+  vtkOpenGLShaderCache* cache = frame.Window->GetShaderCache();
   const int capacity = static_cast<int>(this->EntryCapacity);
-  if (frame.NearPlaneCutsMesh)
+  if (member.NearPlaneCutsMesh)
   {
     // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
     state->vtkglDisable(GL_CULL_FACE);
-    cache->ReadyShaderProgram(this->NearSliceProgram.Shader);
-    vtkShaderProgram* p = this->NearSliceProgram.Shader;
+    cache->ReadyShaderProgram(slices.Shader);
+    vtkShaderProgram* p = slices.Shader;
     setup.SetFrameUniforms(p);
     setup.SetMeshUniforms(p);
     p->SetUniformi("in_entryCapacity", capacity);
-    this->NearSliceProgram.VAO->Bind();
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(frame.NumberOfTetrahedra));
+    if (group)
+    {
+      p->SetUniformi("in_groupMember", index);
+    }
+    slices.VAO->Bind();
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(member.NumberOfTetrahedra));
   }
   // Front faces are counter-clockwise seen from outside, unless the volume's matrix mirrors.
   state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(frame.Mirrored ? GL_FRONT : GL_BACK);
-  cache->ReadyShaderProgram(this->FacesProgram.Shader);
-  vtkShaderProgram* p = this->FacesProgram.Shader;
+  state->vtkglCullFace(member.Mirrored ? GL_FRONT : GL_BACK);
+  cache->ReadyShaderProgram(faces.Shader);
+  vtkShaderProgram* p = faces.Shader;
   setup.SetFrameUniforms(p);
   setup.SetMeshUniforms(p);
   setup.SetCoverageUniforms(p);
   p->SetUniformi("in_entryCapacity", capacity);
-  this->FacesProgram.VAO->Bind();
+  if (group)
+  {
+    p->SetUniformi("in_groupMember", index);
+  }
+  faces.VAO->Bind();
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
-  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * frame.NumberOfBoundaryFaces));
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * member.NumberOfBoundaryFaces));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
-  vtkTiledRayCastComputeShader::Barrier(GL_BUFFER_UPDATE_BARRIER_BIT |
-    GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  state->PopDrawFramebufferBinding();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::SetGroupUniforms(const Frame& frame)
+{
+  // Each volume's own uniforms, by its own setters, under its suffix; then what they share.
+  vtkTiledRayCastComputeShader* traversal = this->Group.GetProgram();
+  for (size_t k = 0; k < frame.Members.size(); ++k)
+  {
+    vtkShaderProgram* member = this->Group.Member(static_cast<int>(k));
+    vtkTiledRayCastProgramSetup* setup = frame.Members[k].Setup;
+    setup->SetFrameUniforms(member);
+    setup->SetMeshUniforms(member);
+    setup->SetIntegrationUniforms(member);
+    const std::string depth = "in_opaqueDepth_v" + std::to_string(k);
+    traversal->SetUniformi(depth.c_str(), frame.OpaqueDepthUnit);
+  }
+  traversal->SetUniformf("in_groupEarlyTermination", frame.EarlyTerminationOpacity);
 }
 
 //------------------------------------------------------------------------------
@@ -440,11 +545,19 @@ void vtkTiledRayCastComputePipeline::Traverse(
 {
   vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
   counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
-  vtkTiledRayCastComputeShader* traversal = this->Traversal;
+  vtkTiledRayCastComputeShader* traversal =
+    frame.Members.empty() ? this->Traversal.Get() : this->Group.GetProgram();
   traversal->Use(frame.Window);
-  setup.SetFrameUniforms(traversal);
-  setup.SetMeshUniforms(traversal);
-  setup.SetIntegrationUniforms(traversal);
+  if (frame.Members.empty())
+  {
+    setup.SetFrameUniforms(traversal);
+    setup.SetMeshUniforms(traversal);
+    setup.SetIntegrationUniforms(traversal);
+  }
+  else
+  {
+    this->SetGroupUniforms(frame);
+  }
   const int size[2] = { frame.Width, frame.Height };
   traversal->SetUniform2i("in_imageSize", size);
   traversal->SetUniformi("in_maximumSteps", frame.MaximumSteps);
@@ -536,6 +649,7 @@ void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastS
   stats->SetNumberOfTilesSkipped(static_cast<int>(counts[CountEmptyGroups]));
   stats->SetNumberOfEntries(counts[CountEntriesAsked]);
   stats->SetNumberOfIncompleteRays(counts[CountIncomplete]);
+  stats->SetNumberOfMixedRays(counts[CountMixedRays]);
   this->RaysStopped = counts[CountStopped];
   this->RaysIncomplete = counts[CountIncomplete];
   this->EntriesAsked = counts[CountEntriesAsked];
@@ -547,7 +661,7 @@ vtkIdType vtkTiledRayCastComputePipeline::GetTargetBytes() const
 {
   // List heads (4 B) and colour (8 B) per pixel of the targets, and the entry list.
   return static_cast<vtkIdType>(this->TargetSize[0]) * this->TargetSize[1] * (4 + 8) +
-    this->EntryCapacity * WordsPerEntry * 4;
+    this->EntryCapacity * this->EntryWords * 4;
 }
 
 //------------------------------------------------------------------------------
@@ -560,6 +674,16 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
     p->Key.clear();
   }
   this->Traversal->ReleaseProgram();
+  for (int k = 0; k < vtkTiledRayCastGroupTraversal::MaximumMembers; ++k)
+  {
+    for (RasterProgram* p : { &this->GroupFaces[k], &this->GroupSlices[k] })
+    {
+      p->Shader = nullptr;
+      p->VAO->ReleaseGraphicsResources();
+      p->Key.clear();
+    }
+  }
+  this->Group.ReleaseGraphicsResources();
   this->EntryHeads->ReleaseGraphicsResources(window);
   this->Color->ReleaseGraphicsResources(window);
   this->Framebuffer->ReleaseGraphicsResources(window);

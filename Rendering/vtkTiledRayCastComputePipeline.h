@@ -50,9 +50,10 @@
 #ifndef vtkTiledRayCastComputePipeline_h
 #define vtkTiledRayCastComputePipeline_h
 
-#include "vtkNew.h"                       // For vtkNew
-#include "vtkTiledRayCastStorageBuffer.h" // For the storage buffers
-#include "vtkType.h"                      // For vtkIdType
+#include "vtkNew.h"                        // For vtkNew
+#include "vtkTiledRayCastGroupTraversal.h" // For the traversal of overlapping volumes
+#include "vtkTiledRayCastStorageBuffer.h"  // For the storage buffers
+#include "vtkType.h"                       // For vtkIdType
 
 #include <string>  // For std::string
 #include <utility> // For std::pair
@@ -101,10 +102,30 @@ public:
     vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error);
 
   /**
+   * The programs of a group of overlapping volumes traversed together (vtkTiledRayCastVolumeGroup):
+   * `members[k]` is volume k's `common` code as for UpdatePrograms. Each volume lists its
+   * entries with its own raster programs; one traversal integrates them all.
+   */
+  bool UpdateGroupPrograms(
+    vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error);
+
+  /**
    * Per-pixel targets for an image of this size (they only grow). False with a message when
    * the GPU cannot allocate them.
    */
   bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height, std::string& error);
+
+  /**
+   * One volume of a group's frame: its uniforms and what its entry pass draws.
+   */
+  struct Member
+  {
+    vtkTiledRayCastProgramSetup* Setup = nullptr;
+    vtkIdType NumberOfBoundaryFaces = 0;
+    vtkIdType NumberOfTetrahedra = 0;
+    bool NearPlaneCutsMesh = false;
+    bool Mirrored = false;
+  };
 
   /**
    * What one frame draws.
@@ -127,6 +148,12 @@ public:
     float PeelEpsilon = 0;
     float ViewportOrigin[2] = { 0, 0 };
     int Viewport[4] = { 0, 0, 0, 0 }; // the caller's, which compositing draws into
+    // A group's frame (two or more volumes, UpdateGroupPrograms): the volumes, in the order of
+    // the programs; the counts above are their sums. The scene's depth (the caller's texture
+    // unit) and the early termination are shared.
+    std::vector<Member> Members;
+    int OpaqueDepthUnit = -1;
+    float EarlyTerminationOpacity = 1.f;
   };
 
   /**
@@ -227,10 +254,21 @@ private:
 
   void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
 
+  static Replacements ProgramReplacements(const Replacements& common, bool group);
+  void ListMemberEntries(const Frame& frame, const Member& member, RasterProgram& faces,
+    RasterProgram& slices, vtkTiledRayCastProgramSetup& setup, bool group, int index);
+  void SetGroupUniforms(const Frame& frame);
+
   RasterProgram FacesProgram;
   RasterProgram NearSliceProgram;
   RasterProgram CompositeProgram;
   vtkNew<vtkTiledRayCastComputeShader> Traversal;
+  // Overlapping volumes: each volume's entry programs, and the traversal of them all.
+  RasterProgram GroupFaces[vtkTiledRayCastGroupTraversal::MaximumMembers];
+  RasterProgram GroupSlices[vtkTiledRayCastGroupTraversal::MaximumMembers];
+  vtkTiledRayCastGroupTraversal Group;
+  // Words per entry node: 3, or 4 in a group's list (the volume's index).
+  vtkIdType EntryWords = 3;
 
   vtkNew<vtkTextureObject> EntryHeads;
   vtkNew<vtkTextureObject> Color;

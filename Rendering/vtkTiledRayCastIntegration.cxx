@@ -46,7 +46,12 @@ int vtkTiledRayCastIntegration::GetMode(vtkTiledRayCastVolumeMapper* mapper) con
     return vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
   }
   const int mode = mapper->GetIntegrationMode();
-  return mode == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION ? this->AutomaticMode : mode;
+  if (mode != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
+  {
+    return mode;
+  }
+  return this->ForcePartial ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION
+                            : this->AutomaticMode;
 }
 
 //------------------------------------------------------------------------------
@@ -83,7 +88,7 @@ bool vtkTiledRayCastIntegration::Update(
   stats->SetIntegrationMode(mode);
   stats->SetPredictedError(
     self->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION
-      ? this->PredictedError
+      ? (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION ? 0.0 : this->PredictedError)
       : -1.0);
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {

@@ -82,6 +82,13 @@ public:
    */
   int GetMode(vtkTiledRayCastVolumeMapper* mapper) const;
 
+  /**
+   * Partial pre-integration whatever the automatic mode chose: for a volume integrated with
+   * others in one traversal (vtkTiledRayCastVolumeGroup), whose mixture reads every volume's
+   * node list. An explicit table mode is not overridden (such a volume is not grouped).
+   */
+  void SetForcePartial(bool force) { this->ForcePartial = force; }
+
   vtkTiledRayCastTransferFunction* GetTransferFunction() { return this->TransferFunction; }
 
   /// Bytes the mode's textures hold on the GPU.
@@ -116,6 +123,7 @@ private:
   vtkTiledRayCastIntegrationTextures Textures;
   vtkTiledRayCastAutomaticIntegration Automatic;
   bool ChoiceMade = false; // since this object exists
+  bool ForcePartial = false;
   int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
   double PredictedError = 0.0;
   std::vector<double> ChoiceKey;

@@ -11,6 +11,10 @@
 // for none; the traversal sets it back to 0 after reading it, so the next
 // frame starts from empty lists without a clear.
 //
+// Overlapping volumes traversed together (TRC_GROUP_ENTRIES, vtkTiledRayCastGroupTraversalCS.glsl)
+// list every volume's entries in one list: a node then has a fourth word, the volume's index in
+// the group (in_groupMember, set per volume's raster pass), and lambda is that volume's own.
+//
 // The list holds in_entryCapacity nodes, sized by the CPU from the entries of
 // earlier frames (it never waits for this frame's). An entry that finds the
 // list full sets its pixel's LOST bit: the traversal walks what the list holds
@@ -29,6 +33,12 @@ layout(std430, binding = 1) buffer trcEntryCountBuffer
   uint trcEntryCount;
 };
 uniform int in_entryCapacity;
+#ifdef TRC_GROUP_ENTRIES
+const uint TRC_ENTRY_WORDS = 4u;
+uniform int in_groupMember;
+#else
+const uint TRC_ENTRY_WORDS = 3u;
+#endif
 
 const uint TRC_NEAR_PLANE_ENTRY = 0x80000000u; // in a node's link
 const uint TRC_ENTRY_LOST = 0x80000000u;       // in a head: an entry found the list full
@@ -49,7 +59,11 @@ void trcAppendEntry(ivec2 pixel, float lambda, uint key, bool nearPlane)
     // it again afterwards, so the pixel's last word has it).
     imageAtomicOr(in_entryHeads, pixel, TRC_ENTRY_LOST);
   }
-  trcEntryNodes[3u * node] = floatBitsToUint(lambda);
-  trcEntryNodes[3u * node + 1u] = key;
-  trcEntryNodes[3u * node + 2u] = (next & TRC_ENTRY_NODE) | (nearPlane ? TRC_NEAR_PLANE_ENTRY : 0u);
+  uint i = TRC_ENTRY_WORDS * node;
+  trcEntryNodes[i] = floatBitsToUint(lambda);
+  trcEntryNodes[i + 1u] = key;
+  trcEntryNodes[i + 2u] = (next & TRC_ENTRY_NODE) | (nearPlane ? TRC_NEAR_PLANE_ENTRY : 0u);
+#ifdef TRC_GROUP_ENTRIES
+  trcEntryNodes[i + 3u] = uint(in_groupMember);
+#endif
 }

@@ -64,7 +64,7 @@ uint trcNextEntry(uint head, bool first, float exitLambda, float lastLambda, uin
   nearPlane = false;
   for (uint node = head; node != 0u;)
   {
-    uint i = 3u * (node - 1u);
+    uint i = TRC_ENTRY_WORDS * (node - 1u);
     float l = uintBitsToFloat(trcEntryNodes[i]);
     uint k = trcEntryNodes[i + 1u];
     uint link = trcEntryNodes[i + 2u];

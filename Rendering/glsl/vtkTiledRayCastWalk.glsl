@@ -26,6 +26,55 @@ int trcSharedFace(uint previous, uvec4 neighborWords)
   return entry;
 }
 
+// How far (in lambda) the ray goes in tet t from lambda, entered through face `entry`, and the
+// face it leaves through: the nearest plane it leaves through, never the entry face. Shared by
+// the walk and the traversal of overlapping volumes (vtkTiledRayCastGroupMember.glsl).
+// Distances are measured from the ray's current point, next to the tet, not from its origin on
+// the near plane: in a flat tet, planes a few float steps apart at lambda ~ 0.5 are then told
+// apart (the wrong one skips a tet).
+float trcExitStep(TrcTet t, TrcRay ray, float lambda, int entry, out int exitFace)
+{
+  vec3 here = ray.origin + lambda * ray.dir;
+  float exitStep = 3.4e38;
+  exitFace = -1;
+  float steepest = -3.4e38;
+  int steepestFace = 0;
+  for (int f = 0; f < 4; ++f)
+  {
+    if (f == entry)
+    {
+      continue;
+    }
+    vec3 normal = trcFaceNormal(t, f);
+    float den = dot(normal, ray.dir);
+    if (den > steepest)
+    {
+      steepest = den;
+      steepestFace = f;
+    }
+    if (den > 0.0)
+    {
+      // A point of face f: point 1 for face 0, point 0 for the others (trcFacePoints).
+      // Chosen without indexing p by a table: NVIDIA's compiler then keeps p in local
+      // memory, not in registers.
+      float step = dot((f == 0 ? t.p[1] : t.p[0]) - here, normal) / den;
+      if (step < exitStep)
+      {
+        exitStep = step;
+        exitFace = f;
+      }
+    }
+  }
+  if (exitFace < 0)
+  {
+    // No face faces away from the ray (a degenerate tet, or a ray inside a
+    // face's plane): leave through the most favourable face without moving.
+    exitFace = steepestFace;
+    exitStep = 0.0;
+  }
+  return exitStep;
+}
+
 int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, inout int entry,
   inout int stalls, inout vec4 color, inout int steps)
 {
@@ -46,48 +95,8 @@ int trcWalk(TrcRay ray, int maximumSteps, inout uint tet, inout float lambda, in
       entry = trcSharedFace(previous, neighborWords);
     }
 
-    // The exit face: the nearest plane the ray leaves through, never the entry face.
-    // Distances are measured from the ray's current point, next to the tet, not from its
-    // origin on the near plane: in a flat tet, planes a few float steps apart at lambda ~ 0.5
-    // are then told apart (the wrong one skips a tet).
-    vec3 here = ray.origin + lambda * ray.dir;
-    float exitStep = 3.4e38;
-    int exitFace = -1;
-    float steepest = -3.4e38;
-    int steepestFace = 0;
-    for (int f = 0; f < 4; ++f)
-    {
-      if (f == entry)
-      {
-        continue;
-      }
-      vec3 normal = trcFaceNormal(t, f);
-      float den = dot(normal, ray.dir);
-      if (den > steepest)
-      {
-        steepest = den;
-        steepestFace = f;
-      }
-      if (den > 0.0)
-      {
-        // A point of face f: point 1 for face 0, point 0 for the others (trcFacePoints).
-        // Chosen without indexing p by a table: NVIDIA's compiler then keeps p in local
-        // memory, not in registers.
-        float step = dot((f == 0 ? t.p[1] : t.p[0]) - here, normal) / den;
-        if (step < exitStep)
-        {
-          exitStep = step;
-          exitFace = f;
-        }
-      }
-    }
-    if (exitFace < 0)
-    {
-      // No face faces away from the ray (a degenerate tet, or a ray inside a
-      // face's plane): leave through the most favourable face without moving.
-      exitFace = steepestFace;
-      exitStep = 0.0;
-    }
+    int exitFace;
+    float exitStep = trcExitStep(t, ray, lambda, entry, exitFace);
     float exitLambda = lambda + max(exitStep, 0.0);
     stalls = exitLambda > lambda ? 0 : stalls + 1;
 

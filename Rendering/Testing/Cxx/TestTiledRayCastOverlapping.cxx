@@ -1,0 +1,531 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    TestTiledRayCastOverlapping.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+// Overlapping volumes (docs/mapper.md, "Overlapping volumes"): volumes of the mapper whose world
+// bounds overlap are integrated in one traversal, their mixture where they overlap, and checked
+// against the exact reference's scene of several volumes (vtkTetReferenceRenderer::AddVolume):
+// two meshes with different transfer functions and matrices, a mesh inside a larger one, the
+// camera inside both; volumes that do not overlap are drawn alone, pixel for pixel as each
+// draws by itself; a volume a group cannot take (the fragment pipeline) warns once and is drawn
+// alone.
+#include "TiledRayCastTestScene.h"
+
+#include "vtkActor.h"
+#include "vtkCellData.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPointDataToCellData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkSphereSource.h"
+#include "vtkTesting.h"
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+using trctest::Expect;
+
+// Another transfer function than the ramp: other colours, opacity falling over the range.
+vtkSmartPointer<vtkVolumeProperty> OtherProperty(vtkDataSet* grid, double fraction)
+{
+  double range[2];
+  grid->GetPointData()->GetScalars()->GetRange(range);
+  const double lo = range[0], hi = range[1];
+  vtkNew<vtkColorTransferFunction> color;
+  color->AddRGBPoint(lo, 0.9, 0.1, 0.8);
+  color->AddRGBPoint(lo + 0.3 * (hi - lo), 0.1, 0.9, 0.9);
+  color->AddRGBPoint(hi, 0.9, 0.9, 0.9);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(lo, 0.5);
+  opacity->AddPoint(lo + 0.6 * (hi - lo), 0.1);
+  opacity->AddPoint(hi, 0.3);
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(fraction * grid->GetLength());
+  return property;
+}
+
+// How many warnings said that a volume is drawn on its own (not those of a mesh's validation).
+int GroupWarnings(trctest::MessageCounter* warnings)
+{
+  int count = 0;
+  for (size_t at = warnings->Text.find("drawn on its own"); at != std::string::npos;
+       at = warnings->Text.find("drawn on its own", at + 1))
+  {
+    ++count;
+  }
+  return count;
+}
+
+// Several volumes in one window, each with its own mapper.
+struct Scene
+{
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  std::vector<vtkSmartPointer<vtkVolume>> Volumes;
+  std::vector<vtkSmartPointer<vtkTiledRayCastVolumeMapper>> Mappers;
+  vtkNew<trctest::MessageCounter> Warnings;
+
+  explicit Scene(int size)
+  {
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(size, size);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->SetBackground(0.1, 0.1, 0.15);
+  }
+
+  vtkVolume* Add(vtkUnstructuredGrid* grid, vtkVolumeProperty* property)
+  {
+    auto mapper = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
+    mapper->SetInputData(grid);
+    mapper->SynchronousStatisticsOn();
+    mapper->AddObserver(vtkCommand::WarningEvent, this->Warnings);
+    auto volume = vtkSmartPointer<vtkVolume>::New();
+    volume->SetMapper(mapper);
+    volume->SetProperty(property);
+    this->Renderer->AddVolume(volume);
+    this->Volumes.push_back(volume);
+    this->Mappers.push_back(mapper);
+    return volume;
+  }
+
+  vtkSmartPointer<vtkUnsignedCharArray> Pixels()
+  {
+    int* size = this->Window->GetSize();
+    auto pixels = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    this->Window->GetPixelData(0, 0, size[0] - 1, size[1] - 1, 0, pixels, 0);
+    return pixels;
+  }
+
+  // Only volume `only` visible, or every volume (-1), or none (-2).
+  void Show(int only)
+  {
+    for (size_t i = 0; i < this->Volumes.size(); ++i)
+    {
+      this->Volumes[i]->SetVisibility(only == -1 || static_cast<int>(i) == only);
+    }
+  }
+};
+
+// The window's image of every volume against the reference's scene of all of them
+// (TiledRayCastTestScene.h's CheckAgainstReference, for several volumes).
+bool CheckScene(Scene& scene, const trctest::Bounds& bounds, const std::string& label)
+{
+  vtkRenderWindow* window = scene.Window;
+  int* size = window->GetSize();
+  const int width = size[0], height = size[1];
+  scene.Show(-2);
+  window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> behind = scene.Pixels();
+  scene.Show(-1);
+  window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> pixels = scene.Pixels();
+  vtkNew<vtkFloatArray> depth;
+  window->GetZbufferData(0, 0, width - 1, height - 1, depth);
+
+  vtkNew<vtkTetReferenceRenderer> reference;
+  vtkVolume* first = scene.Volumes[0];
+  reference->SetInputData(scene.Mappers[0]->GetInput());
+  reference->SetVolumeProperty(first->GetProperty());
+  reference->SetVolume(first);
+  for (size_t i = 1; i < scene.Volumes.size(); ++i)
+  {
+    vtkVolume* v = scene.Volumes[i];
+    reference->AddVolume(scene.Mappers[i]->GetInput(), v->GetProperty(), v->GetMatrix());
+  }
+  reference->SetCamera(scene.Renderer->GetActiveCamera());
+  reference->SetImageSize(width, height);
+  reference->SetOpaqueDepth(depth);
+  if (!reference->Render())
+  {
+    std::cerr << label << ": the reference renderer failed\n";
+    return false;
+  }
+  vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetArray("RGBA");
+  vtkNew<vtkUnsignedCharArray> composited;
+  composited->SetName("RGB");
+  composited->SetNumberOfComponents(3);
+  composited->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  for (vtkIdType i = 0; i < composited->GetNumberOfTuples(); ++i)
+  {
+    const double alpha = rgba->GetComponent(i, 3);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value =
+        rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
+      composited->SetValue(3 * i + c,
+        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
+    }
+  }
+  vtkNew<vtkImageData> expected;
+  expected->SetDimensions(width, height, 1);
+  expected->GetPointData()->SetScalars(composited);
+  vtkNew<vtkImageData> actual;
+  actual->SetDimensions(width, height, 1);
+  pixels->SetName("RGB");
+  actual->GetPointData()->SetScalars(pixels);
+  double stats[3] = { 0, 0, 0 };
+  if (!vtkTetReferenceRenderer::CompareImages(actual, expected, stats))
+  {
+    std::cerr << label << ": images cannot be compared\n";
+    return false;
+  }
+  std::cout << label << " vs exact reference (1/255): RMSE " << stats[0] << ", 99.9th percentile "
+            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", " << bounds.P999
+            << ", " << bounds.Max << ")\n";
+  std::cout << label << ": " << scene.Mappers[0]->GetStatistics()->GetSummary() << "\n";
+  const bool ok = stats[0] <= bounds.RMSE && stats[1] <= bounds.P999 && stats[2] <= bounds.Max;
+  if (!ok)
+  {
+    std::cerr << label << ": difference to the exact reference exceeds its bounds\n";
+  }
+  return ok;
+}
+
+// A scene of volumes that overlap: one traversal with rays through their mixture, within the
+// default bounds of the exact reference, silently.
+bool CheckGroup(Scene& scene, const std::string& label)
+{
+  bool ok = CheckScene(scene, trctest::Bounds(), label);
+  const int volumes = static_cast<int>(scene.Volumes.size());
+  for (auto& mapper : scene.Mappers)
+  {
+    ok = Expect(mapper->GetStatistics()->GetRendered() &&
+             mapper->GetStatistics()->GetNumberOfGroupedVolumes() == volumes,
+           label + ": every volume drawn in one traversal") &&
+      ok;
+  }
+  ok = Expect(scene.Mappers[0]->GetStatistics()->GetNumberOfMixedRays() > 0,
+         label + ": rays through the mixture") &&
+    ok;
+  ok = Expect(GroupWarnings(scene.Warnings) == 0, label + ": no warning") && ok;
+  return ok;
+}
+
+// `grid`'s volume scaled to `scale` of `around`'s size, turned, its centre at around's centre
+// plus `offset` times around's size.
+void Place(vtkVolume* volume, vtkDataSet* grid, vtkDataSet* around, double scale,
+  const double offset[3], const double orientation[3])
+{
+  double c[3], a[3];
+  grid->GetCenter(c);
+  around->GetCenter(a);
+  const double size = around->GetLength();
+  volume->SetOrigin(c);
+  volume->SetScale(scale * size / grid->GetLength());
+  volume->SetOrientation(orientation[0], orientation[1], orientation[2]);
+  volume->SetPosition(
+    a[0] - c[0] + offset[0] * size, a[1] - c[1] + offset[1] * size, a[2] - c[2] + offset[2] * size);
+}
+
+// Two meshes with different transfer functions and matrices, overlapping; then the second one
+// in the fragment pipeline, which a group does not take: a warning, and drawn alone.
+bool TestTwo(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
+{
+  Scene scene(128);
+  scene.Add(torus, trctest::MakePropertyFor(torus, 0.08));
+  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
+  const double offset[3] = { 0.15, -0.05, 0.1 };
+  const double orientation[3] = { 20, 35, -10 };
+  Place(second, spx, torus, 0.7, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Elevation(25);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "two overlapping");
+
+  // An opaque sphere in the overlap ends every volume's rays at its surface (the scene's depth,
+  // which the volumes share).
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(second->GetCenter());
+  sphere->SetRadius(0.12 * torus->GetLength());
+  sphere->SetThetaResolution(24);
+  sphere->SetPhiResolution(24);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkActor> ball;
+  ball->SetMapper(sphereMapper);
+  scene.Renderer->AddActor(ball);
+  ok = CheckGroup(scene, "two overlapping, an opaque sphere") && ok;
+  scene.Renderer->RemoveActor(ball);
+
+  // Drawn one after the other: the error of compositing overlapping volumes in VTK's order.
+  scene.Mappers[1]->SetPipelineToFragment();
+  trctest::Bounds any;
+  any.RMSE = any.P999 = any.Max = 1e9;
+  CheckScene(scene, any, "two overlapping, drawn one by one (not grouped)");
+  ok = Expect(GroupWarnings(scene.Warnings) == 1,
+         "one warning: the fragment pipeline's volume is drawn on its own") &&
+    ok;
+  ok = Expect(scene.Mappers[0]->GetStatistics()->GetNumberOfGroupedVolumes() == 1 &&
+           scene.Mappers[1]->GetStatistics()->GetNumberOfGroupedVolumes() == 1,
+         "no group with the fragment pipeline") &&
+    ok;
+  scene.Window->Render();
+  ok = Expect(GroupWarnings(scene.Warnings) == 1, "warned once") && ok;
+  return ok;
+}
+
+// A small mesh inside a larger one.
+bool TestInside(vtkUnstructuredGrid* outer, vtkUnstructuredGrid* inner)
+{
+  Scene scene(128);
+  scene.Add(outer, trctest::MakePropertyFor(outer, 0.15));
+  vtkVolume* second = scene.Add(inner, OtherProperty(inner, 0.02));
+  const double offset[3] = { 0.02, 0.0, -0.02 };
+  const double orientation[3] = { 0, 60, 30 };
+  Place(second, inner, outer, 0.3, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Azimuth(30);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "mesh inside a mesh");
+
+  // Where the inner mesh is not on the ray, the group's traversal walks the outer one exactly
+  // as it walks alone: the same pixels, alone with the integration a group takes (partial
+  // pre-integration; the automatic mode alone may take a table, within 1/255).
+  vtkSmartPointer<vtkUnsignedCharArray> group = scene.Pixels();
+  for (vtkTiledRayCastVolumeMapper* mapper : scene.Mappers)
+  {
+    mapper->SetIntegrationModeToPartialPreIntegration();
+  }
+  scene.Show(-2);
+  scene.Window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> background = scene.Pixels();
+  scene.Show(0);
+  scene.Window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> outerAlone = scene.Pixels();
+  scene.Show(1);
+  scene.Window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> innerAlone = scene.Pixels();
+  scene.Show(-1);
+  int compared = 0, worst = 0;
+  for (vtkIdType i = 0; i < group->GetNumberOfValues(); i += 3)
+  {
+    bool innerAbsent = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      innerAbsent = innerAbsent && innerAlone->GetValue(i + c) == background->GetValue(i + c);
+    }
+    if (innerAbsent)
+    {
+      ++compared;
+      for (int c = 0; c < 3; ++c)
+      {
+        worst =
+          std::max(worst, std::abs(int(group->GetValue(i + c)) - int(outerAlone->GetValue(i + c))));
+      }
+    }
+  }
+  std::cout << "mesh inside a mesh: " << compared
+            << " pixels without the inner mesh, largest difference to the outer mesh alone "
+            << worst << "/255\n";
+  ok =
+    Expect(worst == 0, "mesh inside a mesh: the outer mesh alone where the inner is absent") && ok;
+  return ok;
+}
+
+// The camera inside both of two overlapping cubes.
+bool TestCameraInside(vtkUnstructuredGrid* box)
+{
+  Scene scene(128);
+  scene.Add(box, trctest::MakePropertyFor(box, 0.2));
+  vtkVolume* second = scene.Add(box, OtherProperty(box, 0.3));
+  const double offset[3] = { 0.1, 0.05, 0.0 };
+  const double orientation[3] = { 10, 0, 30 };
+  Place(second, box, box, 0.9, offset, orientation);
+  vtkCamera* camera = scene.Renderer->GetActiveCamera();
+  camera->SetPosition(0.55, 0.5, 0.45);
+  camera->SetFocalPoint(1.55, 0.8, 0.6);
+  camera->SetViewUp(0, 0, 1);
+  camera->SetViewAngle(70);
+  camera->SetClippingRange(0.01, 10);
+  return CheckGroup(scene, "camera inside both");
+}
+
+// Two volumes that do not overlap: each drawn alone, the same pixels as each alone.
+bool TestApart(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
+{
+  Scene scene(128);
+  scene.Add(torus, trctest::MakePropertyFor(torus, 0.08));
+  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
+  const double offset[3] = { 1.2, 0.0, 0.0 };
+  const double orientation[3] = { 0, 0, 0 };
+  Place(second, spx, torus, 0.7, offset, orientation);
+  scene.Renderer->ResetCamera();
+  bool ok = CheckScene(scene, trctest::Bounds(), "apart");
+  for (auto& mapper : scene.Mappers)
+  {
+    ok = Expect(mapper->GetStatistics()->GetNumberOfGroupedVolumes() == 1, "apart: no group") && ok;
+  }
+  vtkSmartPointer<vtkUnsignedCharArray> both = scene.Pixels();
+  scene.Show(0);
+  scene.Window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> first = scene.Pixels();
+  scene.Show(1);
+  scene.Window->Render();
+  vtkSmartPointer<vtkUnsignedCharArray> other = scene.Pixels();
+  scene.Show(-1);
+  // They cover different pixels: each pixel of both is the first's or the second's.
+  int worst = 0;
+  for (vtkIdType i = 0; i < both->GetNumberOfValues(); i += 3)
+  {
+    bool asFirst = true;
+    bool asOther = true;
+    for (int c = 0; c < 3; ++c)
+    {
+      asFirst = asFirst && both->GetValue(i + c) == first->GetValue(i + c);
+      asOther = asOther && both->GetValue(i + c) == other->GetValue(i + c);
+    }
+    if (!asFirst && !asOther)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        worst = std::max(worst, std::abs(int(both->GetValue(i + c)) - int(first->GetValue(i + c))));
+      }
+    }
+  }
+  std::cout << "apart: largest difference to the volumes drawn each alone " << worst << "/255\n";
+  ok = Expect(worst == 0, "apart: the same pixels as each volume alone") && ok;
+  ok = Expect(GroupWarnings(scene.Warnings) == 0, "apart: no warning") && ok;
+  return ok;
+}
+
+// Four overlapping copies of a mesh, each turned and with its own transfer function: one
+// traversal of four. A fifth overlapping volume: more than a group takes, each drawn alone,
+// warned once per mapper.
+bool TestFour(vtkUnstructuredGrid* spx)
+{
+  Scene scene(128);
+  for (int i = 0; i < 4; ++i)
+  {
+    vtkVolume* volume = scene.Add(spx,
+      i % 2 == 0 ? trctest::MakePropertyFor(spx, 0.1 + 0.05 * i)
+                 : OtherProperty(spx, 0.1 + 0.05 * i));
+    const double offset[3] = { 0.08 * i, -0.04 * i, 0.02 * i };
+    const double orientation[3] = { 15.0 * i, 25.0 * i, -10.0 * i };
+    Place(volume, spx, spx, 1.0 - 0.1 * i, offset, orientation);
+  }
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Elevation(-20);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "four overlapping");
+
+  vtkVolume* fifth = scene.Add(spx, OtherProperty(spx, 0.3));
+  const double offset[3] = { -0.05, 0.05, 0.0 };
+  const double orientation[3] = { 0, 0, 90 };
+  Place(fifth, spx, spx, 0.8, offset, orientation);
+  scene.Window->Render();
+  for (auto& mapper : scene.Mappers)
+  {
+    ok = Expect(mapper->GetStatistics()->GetRendered() &&
+             mapper->GetStatistics()->GetNumberOfGroupedVolumes() == 1,
+           "five overlapping: each drawn alone") &&
+      ok;
+  }
+  ok = Expect(GroupWarnings(scene.Warnings) == 5, "five overlapping: one warning per mapper") && ok;
+  scene.Window->Render();
+  ok = Expect(GroupWarnings(scene.Warnings) == 5, "five overlapping: warned once") && ok;
+  return ok;
+}
+
+// Optically thick media overlapping (optical depth up to about 40 across): the mixture's
+// panels and early ray termination.
+bool TestThick(vtkUnstructuredGrid* box)
+{
+  Scene scene(96);
+  scene.Add(box, trctest::MakePropertyFor(box, 0.02));
+  vtkVolume* second = scene.Add(box, OtherProperty(box, 0.015));
+  const double offset[3] = { 0.15, 0.1, 0.05 };
+  const double orientation[3] = { 30, 20, 10 };
+  Place(second, box, box, 0.8, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Azimuth(20);
+  scene.Renderer->ResetCameraClippingRange();
+  return CheckGroup(scene, "thick overlapping");
+}
+
+// Empty-space skipping (a band of one volume's scalars: rays enter and leave its visible part)
+// overlapping a volume of cell scalars: each volume's own shader variants in one traversal.
+bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
+{
+  Scene scene(96);
+  double range[2];
+  fin->GetPointData()->GetScalars()->GetRange(range);
+  scene.Add(fin, trcscene::MakeBandProperty(range, 0.5, 0.1, fin->GetLength() / 20));
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(spx);
+  toCells->Update();
+  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  cells->GetPointData()->Initialize();
+  vtkSmartPointer<vtkVolumeProperty> property = OtherProperty(spx, 0.1);
+  vtkVolume* second = scene.Add(cells, property);
+  const double offset[3] = { 0.0, 0.05, 0.0 };
+  const double orientation[3] = { 0, 30, 0 };
+  Place(second, spx, fin, 0.9, offset, orientation);
+  scene.Renderer->ResetCamera();
+  scene.Renderer->GetActiveCamera()->Azimuth(-40);
+  scene.Renderer->ResetCameraClippingRange();
+  bool ok = CheckGroup(scene, "band and cell scalars");
+  ok = Expect(scene.Mappers[0]->GetStatistics()->GetNumberOfVisibleTetrahedra() <
+           fin->GetNumberOfCells(),
+         "band and cell scalars: empty space skipped") &&
+    ok;
+  return ok;
+}
+
+// One mapper for two overlapping volumes (VTK allows it): the mapper holds one frame's state,
+// so they are drawn one by one as before, with one warning.
+bool TestSharedMapper(vtkUnstructuredGrid* spx)
+{
+  Scene scene(64);
+  scene.Add(spx, trctest::MakePropertyFor(spx, 0.1));
+  auto second = vtkSmartPointer<vtkVolume>::New();
+  second->SetMapper(scene.Mappers[0]);
+  second->SetProperty(OtherProperty(spx, 0.1));
+  const double offset[3] = { 0.1, 0.0, 0.0 };
+  const double orientation[3] = { 0, 30, 0 };
+  Place(second, spx, spx, 0.8, offset, orientation);
+  scene.Renderer->AddVolume(second);
+  scene.Renderer->ResetCamera();
+  scene.Window->Render();
+  scene.Window->Render();
+  bool ok = Expect(scene.Mappers[0]->GetStatistics()->GetRendered() &&
+      scene.Mappers[0]->GetStatistics()->GetNumberOfGroupedVolumes() == 1,
+    "shared mapper: no group");
+  ok = Expect(GroupWarnings(scene.Warnings) == 1, "shared mapper: one warning") && ok;
+  return ok;
+}
+}
+
+int TestTiledRayCastOverlapping(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> torus = trctest::ReadMesh(argc, argv, "torus_vistrails.vtu");
+  vtkSmartPointer<vtkUnstructuredGrid> spx = trctest::ReadMesh(argc, argv, "spx_vistrails.vtu");
+  vtkSmartPointer<vtkUnstructuredGrid> box = trctest::ReadMesh(argc, argv, "box5_tets.vtu");
+  vtkSmartPointer<vtkUnstructuredGrid> fin = trctest::ReadMesh(argc, argv, "bluntfin_tets.vtu");
+  if (!torus || !spx || !box || !fin)
+  {
+    return EXIT_FAILURE;
+  }
+  if (!trctest::RenderingSupported())
+  {
+    return VTK_SKIP_RETURN_CODE;
+  }
+  bool ok = TestTwo(torus, spx);
+  ok = TestInside(spx, spx) && ok;
+  ok = TestCameraInside(box) && ok;
+  ok = TestApart(torus, spx) && ok;
+  ok = TestFour(spx) && ok;
+  ok = TestThick(box) && ok;
+  ok = TestBandAndCells(fin, spx) && ok;
+  ok = TestSharedMapper(spx) && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

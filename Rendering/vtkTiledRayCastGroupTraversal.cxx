@@ -1,0 +1,206 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastGroupTraversal.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastGroupTraversal.h"
+
+#include "vtkShaderProgram.h"
+#include "vtkTiledRayCastComputeShader.h"
+#include "vtkTiledRayCastMemberUniforms.h"
+
+#include "vtkTiledRayCastEntryList.h"
+#include "vtkTiledRayCastGroupMember.h"
+#include "vtkTiledRayCastGroupTraversalCS.h"
+#include "vtkTiledRayCastWalk.h"
+
+#include <cctype>
+#include <sstream>
+
+namespace
+{
+bool IsIdentifierChar(char c)
+{
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+}
+
+// The identifiers of one volume's code: its functions and types (trc*, Trc*), constants and
+// switches (TRC_*) and uniforms (in_*).
+bool IsVolumeIdentifier(const std::string& word)
+{
+  auto starts = [&word](const char* prefix)
+  { return word.compare(0, std::char_traits<char>::length(prefix), prefix) == 0; };
+  return starts("trc") || starts("Trc") || starts("TRC_") || starts("in_");
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastGroupTraversal::vtkTiledRayCastGroupTraversal() = default;
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastGroupTraversal::~vtkTiledRayCastGroupTraversal() = default;
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastGroupTraversal::Rename(
+  const std::string& code, const std::string& suffix)
+{
+  std::string out;
+  out.reserve(code.size() + code.size() / 8);
+  size_t i = 0;
+  while (i < code.size())
+  {
+    const char c = code[i];
+    if (std::isdigit(static_cast<unsigned char>(c)))
+    {
+      // A number (1e-12, 0x7FFFFFFFu): copied whole, so that no part of it reads as a name.
+      size_t j = i;
+      while (j < code.size() && (IsIdentifierChar(code[j]) || code[j] == '.'))
+      {
+        ++j;
+      }
+      out.append(code, i, j - i);
+      i = j;
+    }
+    else if (IsIdentifierChar(c))
+    {
+      size_t j = i;
+      while (j < code.size() && IsIdentifierChar(code[j]))
+      {
+        ++j;
+      }
+      const std::string word = code.substr(i, j - i);
+      out += word;
+      if (IsVolumeIdentifier(word))
+      {
+        out += suffix;
+      }
+      i = j;
+    }
+    else
+    {
+      out += c;
+      ++i;
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastGroupTraversal::Expand(const std::string& code, int count)
+{
+  const std::string tag = "//TRC::EachMember ";
+  std::istringstream in(code);
+  std::string out;
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (line.compare(0, tag.size(), tag) != 0)
+    {
+      out += line + "\n";
+      continue;
+    }
+    const std::string body = line.substr(tag.size());
+    for (int k = 0; k < count; ++k)
+    {
+      std::string copy = body;
+      for (size_t at = copy.find('@'); at != std::string::npos; at = copy.find('@', at))
+      {
+        copy.replace(at, 1, std::to_string(k));
+      }
+      out += "  " + copy + "\n";
+    }
+  }
+  return out;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastGroupTraversal::Update(
+  const std::vector<Replacements>& members, const std::string& version, std::string& error)
+{
+  const int count = static_cast<int>(members.size());
+  if (count < 1 || count > MaximumMembers)
+  {
+    error = "The traversal of overlapping volumes takes 1 to 4 volumes.";
+    return false;
+  }
+  // Each volume's code: what its own traversal holds, then what the group needs of it.
+  std::string volumes;
+  for (int k = 0; k < count; ++k)
+  {
+    std::string code;
+    for (const char* tag :
+      { "//TRC::Common::Dec", "//TRC::Layout::Dec", "//TRC::Integration::Dec" })
+    {
+      for (const auto& r : members[k])
+      {
+        if (r.first == tag)
+        {
+          code += r.second + "\n";
+        }
+      }
+    }
+    code += vtkTiledRayCastWalk;
+    code += vtkTiledRayCastGroupMember;
+    volumes += "// Volume " + std::to_string(k) + "\n" + Rename(code, "_v" + std::to_string(k));
+  }
+  std::string source = Expand(vtkTiledRayCastGroupTraversalCS, count);
+  vtkShaderProgram::Substitute(source, "//TRC::Version",
+    version + "#define TRC_GROUP_MEMBERS " + std::to_string(count) + "\n", false);
+  vtkShaderProgram::Substitute(source, "//TRC::Group::Members", volumes, false);
+  vtkShaderProgram::Substitute(source, "//TRC::EntryList::Dec", vtkTiledRayCastEntryList, false);
+
+  vtkTiledRayCastComputeShader* program = this->Program;
+  if (source == program->GetSource() && program->GetHandle() && count == this->NumberOfMembers)
+  {
+    return true;
+  }
+  if (!program->Build(source))
+  {
+    error = "The compute shader of the tiled ray caster's traversal of overlapping volumes failed "
+            "to build (" +
+      program->GetError() + ").";
+    this->NumberOfMembers = 0;
+    return false;
+  }
+  for (int k = 0; k < MaximumMembers; ++k)
+  {
+    if (k < count)
+    {
+      this->Members[k]->Map(program, "_v" + std::to_string(k), { "in_opaqueDepth" });
+    }
+    else
+    {
+      this->Members[k]->Unmap();
+    }
+  }
+  this->NumberOfMembers = count;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkTiledRayCastComputeShader* vtkTiledRayCastGroupTraversal::GetProgram()
+{
+  return this->Program;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkTiledRayCastGroupTraversal::Member(int k)
+{
+  return this->Members[k];
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastGroupTraversal::ReleaseGraphicsResources()
+{
+  for (auto& member : this->Members)
+  {
+    member->Unmap();
+  }
+  this->Program->ReleaseProgram();
+  this->NumberOfMembers = 0;
+}

@@ -1,0 +1,287 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeGroup.cxx
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+#include "vtkTiledRayCastVolumeGroup.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkRenderer.h"
+#include "vtkTiledRayCastVolumeMapper.h"
+#include "vtkVolume.h"
+#include "vtkVolumeMapper.h"
+#include "vtkVolumeProperty.h"
+#include "vtkWeakPointer.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+namespace
+{
+// Per renderer, the volumes drawn in its current frame by another volume's mapper. Cleared when
+// the renderer starts a frame (its StartEvent comes before any volume is drawn), so a mark
+// never outlives the frame it was made in, whatever order VTK calls the mappers in next.
+struct RendererFrame
+{
+  vtkWeakPointer<vtkRenderer> Renderer;
+  std::set<vtkVolume*> Drawn;
+};
+std::map<vtkRenderer*, RendererFrame>& Frames()
+{
+  static std::map<vtkRenderer*, RendererFrame> frames;
+  return frames;
+}
+
+void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
+{
+  auto& frames = Frames();
+  auto it = frames.find(static_cast<vtkRenderer*>(caller));
+  if (it == frames.end())
+  {
+    return;
+  }
+  if (event == vtkCommand::DeleteEvent)
+  {
+    frames.erase(it);
+  }
+  else
+  {
+    it->second.Drawn.clear();
+  }
+}
+
+std::string Warning(const std::string& reason)
+{
+  return "This volume overlaps another volume of a tiled ray-cast mapper, but " + reason +
+    ": it is drawn on its own, before or after the others in VTK's order, not mixed with them "
+    "where they overlap (docs/mapper.md, \"Overlapping volumes\").";
+}
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastVolumeGroup::Refusal(
+  vtkTiledRayCastVolumeMapper* mapper, vtkVolume* volume, bool noCompute, bool lit)
+{
+  vtkVolumeProperty* property = volume->GetProperty();
+  if (mapper->GetNumberOfInputConnections(0) == 0 || !mapper->GetInputDataObject(0, 0) || !property)
+  {
+    return "it has no input or property";
+  }
+  if (mapper->GetPipeline() == vtkTiledRayCastVolumeMapper::FRAGMENT_PIPELINE || noCompute)
+  {
+    return "it uses the fragment pipeline (a group needs the compute pipeline)";
+  }
+  if (mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
+  {
+    return "its blend mode is not composite";
+  }
+  const int mode = mapper->GetIntegrationMode();
+  if (mode != vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
+    mode != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
+  {
+    return "its integration is a pre-integration table (a group integrates with partial "
+           "pre-integration, which the automatic mode, the default, takes in a group)";
+  }
+  if (mapper->GetMeshLayout() != vtkTiledRayCastVolumeMapper::COMPACT_LAYOUT)
+  {
+    return "it uses the paper's mesh layout";
+  }
+  if (mapper->GetNumberOfClippingPlanes() > 0)
+  {
+    return "it has clipping planes";
+  }
+  if (property->GetShade() || lit)
+  {
+    return "it is shaded or uses gradient opacity";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::Overlap(vtkVolume* a, vtkVolume* b)
+{
+  const double* p = a->GetBounds();
+  double ba[6];
+  std::copy(p, p + 6, ba);
+  const double* bb = b->GetBounds();
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(ba[2 * i] <= bb[2 * i + 1] && bb[2 * i] <= ba[2 * i + 1]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::Select(
+  const std::vector<Candidate>& candidates, vtkVolume* self)
+{
+  // A mapper drawing several volumes holds one frame's state: those volumes are drawn alone.
+  auto shared = [&candidates](const Candidate& c)
+  {
+    return std::count_if(candidates.begin(), candidates.end(),
+             [&c](const Candidate& o) { return o.Member == c.Member; }) > 1;
+  };
+  auto refusal = [&shared](const Candidate& c)
+  {
+    return shared(c) ? std::string("its mapper draws another volume too")
+                     : c.Member->GetGroupRefusal(c.Volume, false);
+  };
+  std::vector<Candidate> alone;
+  std::vector<Candidate> eligible;
+  for (const Candidate& c : candidates)
+  {
+    if (c.Volume == self)
+    {
+      alone.push_back(c);
+    }
+    if (refusal(c).empty())
+    {
+      eligible.push_back(c);
+    }
+  }
+  if (alone.empty())
+  {
+    return alone;
+  }
+  const Candidate me = alone.front();
+  const std::string reason = refusal(me);
+  if (!reason.empty())
+  {
+    for (const Candidate& c : candidates)
+    {
+      if (c.Volume != self && Overlap(self, c.Volume))
+      {
+        me.Member->WarnGroupOnce(Warning(reason));
+        break;
+      }
+    }
+    return alone;
+  }
+  // The volumes that overlap this one, directly or through others.
+  std::vector<bool> in(eligible.size(), false);
+  std::vector<size_t> todo;
+  for (size_t i = 0; i < eligible.size(); ++i)
+  {
+    if (eligible[i].Volume == self)
+    {
+      in[i] = true;
+      todo.push_back(i);
+    }
+  }
+  while (!todo.empty())
+  {
+    const size_t i = todo.back();
+    todo.pop_back();
+    for (size_t j = 0; j < eligible.size(); ++j)
+    {
+      if (!in[j] && Overlap(eligible[i].Volume, eligible[j].Volume))
+      {
+        in[j] = true;
+        todo.push_back(j);
+      }
+    }
+  }
+  std::vector<Candidate> group = alone;
+  for (size_t i = 0; i < eligible.size(); ++i)
+  {
+    if (in[i] && eligible[i].Volume != self)
+    {
+      group.push_back(eligible[i]);
+    }
+  }
+  if (group.size() > static_cast<size_t>(MaximumVolumes))
+  {
+    me.Member->WarnGroupOnce(Warning(std::to_string(group.size()) +
+      " volumes overlap, directly or through others, and one traversal takes at most " +
+      std::to_string(MaximumVolumes)));
+    return alone;
+  }
+  return group;
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeGroup::Render(
+  vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const std::vector<Candidate>& group)
+{
+  if (group.size() < 2)
+  {
+    return 0;
+  }
+  // Each volume's own CPU work (only what changed); the first sets the image size.
+  int rays[2] = { 0, 0 };
+  vtkTiledRayCastGroupMember* first = group.front().Member;
+  if (!first->PrepareGroupFrame(renderer, group.front().Volume, window, true, rays))
+  {
+    return 0;
+  }
+  std::vector<vtkTiledRayCastGroupMember*> members;
+  std::vector<vtkVolume*> volumes;
+  for (const Candidate& c : group)
+  {
+    if (c.Member != first && !c.Member->PrepareGroupFrame(renderer, c.Volume, window, false, rays))
+    {
+      continue; // it draws nothing: its own Render() says why
+    }
+    const std::string refusal = c.Member->GetGroupRefusal(c.Volume, true);
+    if (!refusal.empty())
+    {
+      c.Member->WarnGroupOnce(Warning(refusal));
+      if (c.Member == first)
+      {
+        return 0;
+      }
+      continue;
+    }
+    members.push_back(c.Member);
+    volumes.push_back(c.Volume);
+  }
+  if (members.size() < 2 || !first->DrawGroup(window, rays, members))
+  {
+    return 0;
+  }
+  const int count = static_cast<int>(members.size());
+  for (size_t i = 1; i < members.size(); ++i)
+  {
+    MarkDrawn(renderer, volumes[i]);
+    members[i]->FinishGroupFrame(count);
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto& frames = Frames();
+  RendererFrame& frame = frames[renderer];
+  if (!frame.Renderer)
+  {
+    // A renderer seen for the first time (or a new one at a deleted one's address).
+    frame.Renderer = renderer;
+    frame.Drawn.clear();
+    vtkNew<vtkCallbackCommand> callback;
+    callback->SetCallback(RendererEvent);
+    renderer->AddObserver(vtkCommand::StartEvent, callback);
+    renderer->AddObserver(vtkCommand::DeleteEvent, callback);
+  }
+  frame.Drawn.insert(volume);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto& frames = Frames();
+  auto it = frames.find(renderer);
+  return it != frames.end() && it->second.Renderer == renderer &&
+    it->second.Drawn.count(volume) > 0;
+}

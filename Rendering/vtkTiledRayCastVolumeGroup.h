@@ -1,0 +1,146 @@
+/*=========================================================================
+
+  Program:   TiledRayCast
+  Module:    vtkTiledRayCastVolumeGroup.h
+
+  Copyright (c) the TiledRayCast authors
+  All rights reserved.
+  See LICENSE for details.
+
+=========================================================================*/
+/**
+ * @class   vtkTiledRayCastVolumeGroup
+ * @brief   overlapping volumes of tiled ray-cast mappers, drawn together in one traversal
+ *
+ * VTK draws a renderer's volumes one after another; where two overlap, compositing one over
+ * the other is wrong. Volumes of this module's mappers (compute pipeline, composite blending)
+ * whose world bounds overlap, directly or through others, form a group of up to four: the
+ * first of them whose mapper VTK calls in a frame draws them all in one traversal
+ * (vtkTiledRayCastGroupTraversal: each volume's entries in one list, its segments merged in
+ * depth order with the others', their mixture integrated where they overlap), and marks the
+ * others drawn for this frame of the renderer, so that their mappers draw nothing. Each
+ * volume still prepares its own mesh, transfer function and textures (its mapper's work,
+ * only what changed).
+ *
+ * What a group does not take (the fragment pipeline, other blend modes or integrations, the
+ * paper's layout, clipping planes, shading, gradient opacity, more than four volumes) is
+ * drawn on its own as before, with one warning per mapper.
+ *
+ * Private to the module: not wrapped, not installed.
+ */
+
+#ifndef vtkTiledRayCastVolumeGroup_h
+#define vtkTiledRayCastVolumeGroup_h
+
+#include "vtkTiledRayCastComputePipeline.h" // For the pipeline's Member and Replacements
+
+#include <string> // For std::string
+#include <vector> // For std::vector
+
+class vtkOpenGLRenderWindow;
+class vtkRenderer;
+class vtkTiledRayCastVolumeMapper;
+class vtkVolume;
+
+/**
+ * What a group needs of one volume's mapper (its internals implement it).
+ */
+class vtkTiledRayCastGroupMember : public vtkTiledRayCastProgramSetup
+{
+public:
+  /**
+   * Empty where this volume can be traversed with others, else what stops it (a phrase: "it
+   * uses shading"). Before its frame is prepared, from the mapper's settings; after, also what
+   * its frame found.
+   */
+  virtual std::string GetGroupRefusal(vtkVolume* volume, bool prepared) = 0;
+
+  /**
+   * The CPU work of the volume's frame (its mapper's PrepareFrame, without per-pixel targets
+   * unless it draws the group); `rays` is the group's image size, set by the first volume.
+   * False when the volume draws nothing.
+   */
+  virtual bool PrepareGroupFrame(vtkRenderer* renderer, vtkVolume* volume,
+    vtkOpenGLRenderWindow* window, bool draws, int rays[2]) = 0;
+
+  /**
+   * The volume's GLSL (//TRC::Common::Dec, //TRC::Layout::Dec, //TRC::Integration::Dec) and
+   * what its entry pass draws.
+   */
+  virtual vtkTiledRayCastComputePipeline::Replacements GetGroupCode() = 0;
+  virtual vtkTiledRayCastComputePipeline::Member GetGroupMember() = 0;
+
+  /**
+   * The volume's textures (mesh, transfer function, visible tets), for the group's programs.
+   */
+  virtual void ActivateGroupTextures(bool activate) = 0;
+
+  /**
+   * Draws the group (the first volume's mapper): `members` includes this one, first.
+   */
+  virtual bool DrawGroup(vtkOpenGLRenderWindow* window, const int rays[2],
+    const std::vector<vtkTiledRayCastGroupMember*>& members) = 0;
+
+  /**
+   * The statistics of a volume drawn by another's mapper.
+   */
+  virtual void FinishGroupFrame(int volumes) = 0;
+
+  /**
+   * A warning, once per mapper.
+   */
+  virtual void WarnGroupOnce(const std::string& text) = 0;
+};
+
+class vtkTiledRayCastVolumeGroup
+{
+public:
+  static constexpr int MaximumVolumes = 4;
+
+  struct Candidate
+  {
+    vtkVolume* Volume = nullptr;
+    vtkTiledRayCastGroupMember* Member = nullptr;
+  };
+
+  /**
+   * The group of `self` among the visible volumes of our mappers in a renderer (`candidates`,
+   * in the renderer's order, `self` among them): the volumes that can be traversed together
+   * and overlap `self` directly or through others, `self` first. A single volume (itself) where
+   * it overlaps none, cannot be grouped, or the group would have more than four (warned once
+   * per mapper).
+   */
+  static std::vector<Candidate> Select(const std::vector<Candidate>& candidates, vtkVolume* self);
+
+  /**
+   * Draws the group (`group[0]`'s mapper draws) and marks its other volumes drawn for this frame
+   * of the renderer. The number of volumes drawn together, or 0 when the first volume should
+   * draw alone (the others then draw themselves).
+   */
+  static int Render(
+    vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const std::vector<Candidate>& group);
+
+  /**
+   * Whether `volume` was drawn in this frame of `renderer` by another volume's mapper.
+   */
+  static bool WasDrawn(vtkRenderer* renderer, vtkVolume* volume);
+
+  /**
+   * Why `mapper`'s `volume` cannot be traversed with others (a phrase), or empty: the mapper's
+   * settings, whether its context lacks compute shaders, and whether its frame found shading
+   * or gradient opacity in force.
+   */
+  static std::string Refusal(
+    vtkTiledRayCastVolumeMapper* mapper, vtkVolume* volume, bool noCompute, bool lit);
+
+  /**
+   * Whether two volumes' world bounds meet.
+   */
+  static bool Overlap(vtkVolume* a, vtkVolume* b);
+
+private:
+  static void MarkDrawn(vtkRenderer* renderer, vtkVolume* volume);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkTiledRayCastVolumeGroup.h
