@@ -329,8 +329,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
     }
     frame.MaximumSteps = static_cast<int>(std::min<vtkIdType>(tets + 1024, VTK_INT_MAX));
     frame.OpaqueDepthUnit = this->OpaqueDepth.GetTexture()->GetTextureUnit();
-    frame.EarlyTerminationOpacity =
-      static_cast<float>(this->Self->GetEarlyRayTerminationOpacity());
+    frame.EarlyTerminationOpacity = static_cast<float>(this->Self->GetEarlyRayTerminationOpacity());
   }
 
   std::string error;
@@ -756,8 +755,8 @@ std::string vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupRefusal(
 }
 
 //------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(vtkRenderer* ren,
-  vtkVolume* vol, vtkOpenGLRenderWindow* window, bool draws, int rays[2])
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(
+  vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window, bool draws, int rays[2])
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   if (!draws)

@@ -149,13 +149,18 @@ void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolume
   // to the step above the longest edge.
   const double longest = Quantized(frame.LongestEdge * norm, std::ceil);
   const double reference = Quantized(0.5 * frame.TypicalEdge * norm / std::sqrt(3.0), std::round);
-  const std::vector<double> key = { static_cast<double>(this->TransferFunction->GetMTime()),
-    static_cast<double>(mesh->GetTopologyTime()), static_cast<double>(mesh->GetScalarsTime()),
-    longest, reference, self->GetMaximumError(),
-    static_cast<double>(self->GetPreIntegrationTableScalarSize()),
-    static_cast<double>(self->GetPreIntegrationTableLengthSize()) };
+  // The transfer function by its nodes, not its time: reading a property's functions (as the
+  // copy for the worker does) may create its default ones and touch its time.
+  const std::vector<float>& nodes = this->TransferFunction->GetNodeTexels();
+  std::vector<double> key(nodes.begin(), nodes.end());
+  key.insert(key.end(),
+    { static_cast<double>(mesh->GetTopologyTime()), static_cast<double>(mesh->GetScalarsTime()),
+      longest, reference, self->GetMaximumError(),
+      static_cast<double>(self->GetPreIntegrationTableScalarSize()),
+      static_cast<double>(self->GetPreIntegrationTableLengthSize()) });
   if (key != this->ChoiceKey)
   {
+
     this->ChoiceKey = key;
     vtkTiledRayCastAutomaticIntegration::Settings settings;
     std::copy(frame.ScalarRange, frame.ScalarRange + 2, settings.ScalarRange);
