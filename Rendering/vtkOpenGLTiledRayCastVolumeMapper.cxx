@@ -9,6 +9,7 @@
 
 =========================================================================*/
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
+#include "vtkOpenGLTiledRayCastVolumeMapperInternals.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
@@ -22,14 +23,9 @@
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastContext.h"
 #include "vtkTiledRayCastDebugEvent.h"
-#include "vtkTiledRayCastDeferredDraw.h"
 #include "vtkTiledRayCastFragmentPipeline.h"
 #include "vtkTiledRayCastFrameGeometry.h"
-#include "vtkTiledRayCastGradientOpacityNodes.h"
 #include "vtkTiledRayCastIntegration.h"
-#include "vtkTiledRayCastLighting.h"
-#include "vtkTiledRayCastMeshBuild.h"
-#include "vtkTiledRayCastMeshTextures.h"
 #include "vtkTiledRayCastOpaqueDepth.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
@@ -37,14 +33,10 @@
 #include "vtkTiledRayCastShaderComposition.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastTransferFunction.h"
-#include "vtkTiledRayCastUniforms.h"
-#include "vtkTiledRayCastVisibleMesh.h"
 #include "vtkTiledRayCastVolumeGroup.h"
-#include "vtkTiledRayCastWarnings.h"
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGridBase.h"
 #include "vtkVolume.h"
-#include "vtkVolumeCollection.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
 #include "vtk_glew.h"
@@ -83,162 +75,6 @@ void Activate(vtkTextureObject* texture, bool activate)
 }
 
 } // anonymous namespace
-
-//------------------------------------------------------------------------------
-class vtkOpenGLTiledRayCastVolumeMapper::vtkInternals : public vtkTiledRayCastGroupMember
-{
-public:
-  explicit vtkInternals(vtkOpenGLTiledRayCastVolumeMapper* self)
-    : Self(self)
-    , Deferred(self)
-    , Mesh(self)
-    , Warnings(self)
-  {
-  }
-
-  vtkOpenGLTiledRayCastVolumeMapper* Self;
-
-  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
-  vtkTiledRayCastDeferredDraw Deferred;
-
-  // Context: checked once per window.
-  vtkTiledRayCastContext Context;
-
-  // The pipeline of this frame: compute or fragment.
-  bool UseCompute = false;
-  vtkTiledRayCastComputePipeline Compute;
-  vtkTiledRayCastFragmentPipeline Fragment;
-  // What the pipeline's programs were last built from.
-  vtkTiledRayCastShaderComposition Composition;
-
-  // CPU mesh and its layout.
-  vtkTiledRayCastMeshBuild Mesh;
-  vtkTiledRayCastMeshTextures MeshTextures;
-  // The faces rays enter by, and which tets they may cross (empty-space skipping).
-  vtkTiledRayCastVisibleMesh VisibleMesh;
-
-  // Transfer function.
-  vtkTiledRayCastIntegration Integration;
-
-  // The scene's depth, which ends the rays, and whether this frame's scene may have any.
-  vtkTiledRayCastOpaqueDepth OpaqueDepth;
-  bool SceneDepth = true;
-  // The rays of this frame: the viewport's pixels, or fewer at an image sample distance above 1.
-  int ImageSize[2] = { 0, 0 };
-  vtkTiledRayCastSampleDistance SampleDistance;
-  double FrameSampleDistance = 1.0;
-  double TimedSampleDistance = 1.0; // of the frame the timers in flight measure
-
-  // GPU timers.
-  vtkTiledRayCastPhaseTimers Timers;
-
-  // Warnings given once, errors once until they change.
-  vtkTiledRayCastWarnings Warnings;
-  bool WarnedClippingPlanes = false;
-  bool WarnedGroup = false;
-
-  // Overlapping volumes (vtkTiledRayCastVolumeGroup): the volumes this mapper draws in this
-  // frame's traversal (empty when it draws its own alone), and how many were drawn together.
-  std::vector<vtkTiledRayCastGroupMember*> Group;
-  int GroupSize = 1;
-  // vtkTiledRayCastGroupMember (vtkOpenGLTiledRayCastVolumeMapperGroup.cxx... below).
-  std::string GetGroupRefusal(vtkVolume* volume, bool prepared) override;
-  bool PrepareGroupFrame(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window,
-    bool draws, int rays[2]) override;
-  vtkTiledRayCastComputePipeline::Replacements GetGroupCode() override;
-  vtkTiledRayCastComputePipeline::Member GetGroupMember() override;
-  void ActivateGroupTextures(bool activate) override;
-  bool DrawGroup(vtkOpenGLRenderWindow* window, const int rays[2],
-    const std::vector<vtkTiledRayCastGroupMember*>& members) override;
-  void FinishGroupFrame(int volumes) override;
-  void WarnGroupOnce(const std::string& text) override;
-  // The group of this mapper's volume in the renderer (itself alone where it overlaps none).
-  std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindGroup(vtkRenderer* ren, vtkVolume* vol);
-  vtkTiledRayCastShaderComposition::Inputs ProgramInputs(vtkOpenGLRenderWindow* window);
-
-  // This frame.
-  vtkTiledRayCastFrameGeometry Geometry;
-  vtkTiledRayCastLighting Lighting;
-  vtkTiledRayCastGradientOpacityNodes GradientOpacity;
-  int Viewport[4] = { 0, 0, 0, 0 };
-
-  // The uniforms, read from the members above when the pipelines set up their programs.
-  vtkTiledRayCastUniforms Uniforms{ { this->Self, &this->Geometry, this->ImageSize, this->Viewport,
-    &this->OpaqueDepth, &this->Mesh, &this->MeshTextures, &this->VisibleMesh, &this->Integration,
-    &this->Lighting, &this->GradientOpacity } };
-
-  void ReportError(const std::string& message) { this->Warnings.ReportError(message); }
-  // `ok`, after reporting `error` where it is false (the parts return false with a message).
-  bool Reported(bool ok, const std::string& error)
-  {
-    if (!ok)
-    {
-      this->ReportError(error);
-    }
-    return ok;
-  }
-  // The integration the shaders do (vtkTiledRayCastIntegration::GetMode).
-  int IntegrationMode() const { return this->Integration.GetMode(this->Self); }
-  // Once each: what shading and gradient opacity do not do as asked (this frame's Lighting and
-  // GradientOpacity).
-  void WarnLighting()
-  {
-    this->Warnings.WarnLighting(this->Lighting, this->GradientOpacity, this->Mesh.HasCellScalars);
-  }
-  bool CheckContext(vtkOpenGLRenderWindow* window) { return this->Context.Check(window); }
-  bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
-  bool UploadMesh(vtkOpenGLRenderWindow* window);
-  bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
-  bool UpdateVisibleMesh(vtkOpenGLRenderWindow* window);
-  bool UpdatePrograms(vtkOpenGLRenderWindow* window);
-  bool UpdateTargets(vtkOpenGLRenderWindow* window, int width, int height);
-  bool CaptureOpaqueDepth(vtkOpenGLRenderWindow* window, int width, int height);
-  void ReadTimers(bool wait);
-
-  void ActivateTextures(bool activate);
-  bool ChoosePipeline();
-  // vtkTiledRayCastProgramSetup, for the pipelines: vtkTiledRayCastUniforms sets them.
-  void SetFrameUniforms(vtkShaderProgram* p) override { this->Uniforms.SetFrameUniforms(p); }
-  void SetMeshUniforms(vtkShaderProgram* p) override { this->Uniforms.SetMeshUniforms(p); }
-  void SetCoverageUniforms(vtkShaderProgram* p) override { this->Uniforms.SetCoverageUniforms(p); }
-  void SetIntegrationUniforms(vtkShaderProgram* p) override
-  {
-    this->Uniforms.SetIntegrationUniforms(p);
-  }
-  void SetSampleScaleUniforms(vtkShaderProgram* p) override
-  {
-    this->Uniforms.SetSampleScaleUniforms(p);
-  }
-  int GetMaximumSteps() const
-  {
-    // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
-    return static_cast<int>(std::min<vtkIdType>(this->Mesh.NumberOfTets + 1024, VTK_INT_MAX));
-  }
-  // The GPU work of a frame in each pipeline, from the first hit to compositing (the caller
-  // has pushed the framebuffer bindings; both pop them before compositing).
-  bool RenderCompute(vtkOpenGLRenderWindow* window);
-  bool RenderFragment(vtkOpenGLRenderWindow* window);
-
-  // The steps of Render.
-  void WarnTranslucentGeometry(vtkRenderer* ren, vtkVolume* vol)
-  {
-    this->Warnings.WarnTranslucentGeometry(ren, vol);
-  }
-  bool CheckBlendMode()
-  {
-    return this->Warnings.CheckBlendMode(this->Self->BlendMode, this->UseCompute);
-  }
-  // The CPU work of a frame (only what changed) and the GPU resources it needs; false when
-  // nothing is drawn. Sets the number of rays along x and y. Without `targets` (a volume drawn
-  // by another's mapper) no per-pixel targets.
-  bool PrepareFrame(vtkRenderer* ren, vtkVolume* vol, vtkDataObject* input,
-    vtkVolumeProperty* property, vtkOpenGLRenderWindow* window, int rays[2], bool targets = true);
-  // The GPU work of a frame, in the OpenGL state it restores.
-  bool DrawFrame(vtkOpenGLRenderWindow* window, const int rays[2]);
-  void WarnAfterFrame();
-
-  void ReleaseGraphicsResources(vtkWindow* window);
-};
 
 //------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ChoosePipeline()
@@ -715,144 +551,6 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnAfterFrame()
   {
     this->Warnings.WarnAfterFrame(this->Compute.GetNumberOfRaysStopped(),
       this->Compute.TakeNumberOfRaysIncomplete(), this->Self->Statistics->GetNumberOfEntries());
-  }
-}
-
-//------------------------------------------------------------------------------
-// Overlapping volumes (vtkTiledRayCastVolumeGroup): what a group needs of this mapper.
-std::vector<vtkTiledRayCastVolumeGroup::Candidate>
-vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtkVolume* vol)
-{
-  // The visible volumes of our mappers in this renderer, in its order (the others' internals
-  // are reachable here: they are this class's).
-  std::vector<vtkTiledRayCastVolumeGroup::Candidate> candidates;
-  vtkVolumeCollection* volumes = ren->GetVolumes();
-  vtkCollectionSimpleIterator it;
-  volumes->InitTraversal(it);
-  while (vtkVolume* volume = volumes->GetNextVolume(it))
-  {
-    auto* mapper = vtkOpenGLTiledRayCastVolumeMapper::SafeDownCast(volume->GetMapper());
-    if (mapper && (volume == vol || volume->GetVisibility()))
-    {
-      candidates.push_back({ volume, mapper->Impl });
-    }
-  }
-  if (candidates.size() < 2)
-  {
-    return {};
-  }
-  return vtkTiledRayCastVolumeGroup::Select(candidates, vol);
-}
-
-//------------------------------------------------------------------------------
-std::string vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupRefusal(
-  vtkVolume* volume, bool prepared)
-{
-  // What this frame found (after PrepareFrame): shading or gradient opacity in force.
-  const bool lit = prepared && (this->Lighting.Enabled || this->GradientOpacity.Enabled);
-  return vtkTiledRayCastVolumeGroup::Refusal(
-    this->Self, volume, this->Context.Window && !this->Context.ComputeSupported, lit);
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(
-  vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window, bool draws, int rays[2])
-{
-  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
-  if (!draws)
-  {
-    // Drawn by another mapper: this frame's statistics start here, not in Render().
-    self->Timer->StartTimer();
-    self->Statistics->ResetFrameCounts();
-    self->ResourceCallback->RegisterGraphicsResources(window);
-    if (!this->CheckContext(window) || !this->ChoosePipeline())
-    {
-      return false;
-    }
-  }
-  int width = 0, height = 0;
-  ren->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);
-  this->Viewport[2] = width;
-  this->Viewport[3] = height;
-  int own[2];
-  // The group's mixture reads every volume's transfer-function nodes.
-  this->Integration.SetForcePartial(true);
-  if (!this->UseCompute ||
-    !this->PrepareFrame(ren, vol, self->GetInputDataObject(0, 0), vol->GetProperty(), window,
-      draws ? rays : own, draws))
-  {
-    return false;
-  }
-  // One image for the group: the first volume's rays.
-  std::copy(rays, rays + 2, this->ImageSize);
-  return true;
-}
-
-//------------------------------------------------------------------------------
-vtkTiledRayCastComputePipeline::Replacements
-vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupCode()
-{
-  return vtkTiledRayCastShaderComposition::Compose(
-    this->ProgramInputs(this->Context.Window), this->VisibleMesh.GetShaderDefinitions());
-}
-
-//------------------------------------------------------------------------------
-vtkTiledRayCastComputePipeline::Member
-vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupMember()
-{
-  vtkTiledRayCastComputePipeline::Member member;
-  member.Setup = this;
-  member.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  member.NumberOfTetrahedra = this->Mesh.NumberOfTets;
-  member.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
-  member.Mirrored = this->Geometry.Mirrored;
-  return member;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateGroupTextures(bool activate)
-{
-  this->MeshTextures.ActivateTextures(activate);
-  this->Integration.ActivateTextures(this->IntegrationMode(), activate);
-  this->VisibleMesh.ActivateTextures(activate);
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawGroup(vtkOpenGLRenderWindow* window,
-  const int rays[2], const std::vector<vtkTiledRayCastGroupMember*>& members)
-{
-  std::vector<vtkTiledRayCastComputePipeline::Replacements> code;
-  for (vtkTiledRayCastGroupMember* member : members)
-  {
-    code.push_back(member->GetGroupCode());
-  }
-  std::string error;
-  if (!this->Compute.UpdateGroupPrograms(window, code, error))
-  {
-    this->ReportError(error + " The volumes are drawn one by one.");
-    return false;
-  }
-  this->Group = members;
-  const bool ok = this->DrawFrame(window, rays);
-  this->Group.clear();
-  return ok;
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishGroupFrame(int volumes)
-{
-  this->GroupSize = volumes;
-  this->Self->Statistics->SetPipeline("Compute");
-  this->Self->FinishRender(0);
-}
-
-//------------------------------------------------------------------------------
-void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnGroupOnce(const std::string& text)
-{
-  if (!this->WarnedGroup)
-  {
-    vtkWarningWithObjectMacro(this->Self, << text);
-    this->WarnedGroup = true;
   }
 }
 
