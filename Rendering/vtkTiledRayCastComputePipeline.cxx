@@ -32,6 +32,7 @@
 #include "vtkTiledRayCastNearSliceVS.h"
 #include "vtkTiledRayCastQuadVS.h"
 #include "vtkTiledRayCastTraversalCS.h"
+#include "vtkTiledRayCastTraversalTile.h"
 #include "vtkTiledRayCastWalk.h"
 
 #include <algorithm>
@@ -46,12 +47,12 @@ const unsigned int NodesBinding = 0;
 const unsigned int EntryCountBinding = 1;
 const unsigned int RayCountsBinding = 2;
 // The traversal's workgroup size in pixels (local_size_x and local_size_y of
-// vtkTiledRayCastTraversalCS.glsl). An entry node is 3 words (lambda, key, link), 4 in a group
+// vtkTiledRayCastTraversalTile.glsl). An entry node is 3 words (lambda, key, link), 4 in a group
 // of overlapping volumes (and the volume).
 const int GroupWidth = 8;
 const int GroupHeight = 4;
 
-// The counts of trcRayCountBuffer (vtkTiledRayCastTraversalCS.glsl), in order.
+// The counts of trcRayCountBuffer (vtkTiledRayCastTraversalTile.glsl), in order.
 enum RayCount
 {
   CountRays = 0,
@@ -184,6 +185,7 @@ vtkTiledRayCastComputePipeline::Replacements vtkTiledRayCastComputePipeline::Pro
     group ? "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n"
           : "#version 430 core\n#define TRC_ENTRY_LIST\n");
   replacements.emplace_back("//TRC::EntryList::Dec", vtkTiledRayCastEntryList);
+  replacements.emplace_back("//TRC::TraversalTile::Dec", vtkTiledRayCastTraversalTile);
   replacements.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
   for (const char* tag : { "//TRC::Peel::Dec", "//TRC::Peel::Early", "//TRC::Peel::Impl" })
   {

@@ -17,6 +17,7 @@
 #include "vtkTiledRayCastEntryList.h"
 #include "vtkTiledRayCastGroupMember.h"
 #include "vtkTiledRayCastGroupTraversalCS.h"
+#include "vtkTiledRayCastTraversalTile.h"
 #include "vtkTiledRayCastWalk.h"
 
 #include <cctype>
@@ -153,6 +154,8 @@ bool vtkTiledRayCastGroupTraversal::Update(
     version + "#define TRC_GROUP_MEMBERS " + std::to_string(count) + "\n", false);
   vtkShaderProgram::Substitute(source, "//TRC::Group::Members", volumes, false);
   vtkShaderProgram::Substitute(source, "//TRC::EntryList::Dec", vtkTiledRayCastEntryList, false);
+  vtkShaderProgram::Substitute(
+    source, "//TRC::TraversalTile::Dec", vtkTiledRayCastTraversalTile, false);
 
   vtkTiledRayCastComputeShader* program = this->Program;
   if (source == program->GetSource() && program->GetHandle() && count == this->NumberOfMembers)

@@ -67,3 +67,65 @@ void trcAppendEntry(ivec2 pixel, float lambda, uint key, bool nearPlane)
   trcEntryNodes[i + 3u] = uint(in_groupMember);
 #endif
 }
+
+#ifdef TRC_ENTRY_TRAVERSAL
+// The reading side, for the traversals (vtkTiledRayCastTraversalCS.glsl and, per volume,
+// vtkTiledRayCastGroupTraversalCS.glsl): one copy of the peeling rules, so that a volume of a
+// group enters the layers it enters alone. The raster passes only append.
+uniform float in_peelEpsilon;
+
+// The entry the ray takes next, or 0: the node (index + 1) first in depth order among those
+// allowed after an exit at exitLambda from a layer entered at (lastLambda, lastKey). In a group,
+// among volume `member`'s entries only; the one-volume body stays as it is (the hot path: no
+// extra word read, no extra variable in the loop).
+#ifdef TRC_GROUP_ENTRIES
+uint trcNextEntry(uint head, uint member, bool first, float exitLambda, float lastLambda,
+  uint lastKey, out float lambda, out uint key, out bool nearPlane)
+#else
+uint trcNextEntry(uint head, bool first, float exitLambda, float lastLambda, uint lastKey,
+  out float lambda, out uint key, out bool nearPlane)
+#endif
+{
+  uint best = 0u;
+  lambda = 0.0;
+  key = 0u;
+  nearPlane = false;
+  for (uint node = head; node != 0u;)
+  {
+    uint i = TRC_ENTRY_WORDS * (node - 1u);
+    float l = uintBitsToFloat(trcEntryNodes[i]);
+    uint k = trcEntryNodes[i + 1u];
+    uint link = trcEntryNodes[i + 2u];
+    bool isNear = link >= TRC_NEAR_PLANE_ENTRY;
+    uint current = node;
+    node = link & ~TRC_NEAR_PLANE_ENTRY;
+#ifdef TRC_GROUP_ENTRIES
+    if (trcEntryNodes[i + 3u] != member)
+    {
+      continue;
+    }
+#endif
+    if (!first)
+    {
+      // Peeling rules: only faces (the near plane is behind the ray now), at or behind the
+      // exit, strictly after the last entry in (lambda, key) order.
+      if (isNear || l < exitLambda - in_peelEpsilon ||
+        (abs(l - lastLambda) <= in_peelEpsilon && k <= lastKey))
+      {
+        continue;
+      }
+    }
+    // Depth order: a near-plane entry first, then lambda, then the key.
+    bool better = best == 0u || (isNear && !nearPlane) ||
+      (isNear == nearPlane && (l < lambda || (l == lambda && k < key)));
+    if (better)
+    {
+      best = current;
+      lambda = l;
+      key = k;
+      nearPlane = isNear;
+    }
+  }
+  return best;
+}
+#endif

@@ -15,48 +15,21 @@
 // volumes inside: one alone as its own walk does (trcIntegrate, exact), two
 // or more as their mixture (trcGroupMixture, docs/design.md "Overlapping
 // media"). Each volume takes its entries with the one-volume traversal's
-// rules (vtkTiledRayCastTraversalCS.glsl), so where it overlaps no other, a
-// ray sees what it sees alone.
+// rules (trcNextEntry, vtkTiledRayCastEntryList.glsl), so where it overlaps
+// no other, a ray sees what it sees alone.
 //============================================================================
 //TRC::Group::Members
+// The list's reading side too (trcNextEntry, in_peelEpsilon: each volume's entries only).
+#define TRC_ENTRY_TRAVERSAL
 //TRC::EntryList::Dec
 
-layout(local_size_x = 8, local_size_y = 4) in;
+// The 8x4 tiles: layout, pixels, list heads and counts (vtkTiledRayCastTraversalTile.glsl).
+//TRC::TraversalTile::Dec
 
-layout(binding = 1, rgba16) uniform writeonly image2D in_colorImage;
-uniform ivec2 in_imageSize;
 // The most steps one ray may take in one layer of one volume.
 uniform int in_maximumSteps;
-uniform float in_peelEpsilon;
 // Early ray termination (the first volume's).
 uniform float in_groupEarlyTermination;
-
-// The counts of vtkTiledRayCastTraversalCS.glsl, and the rays that met a mixture.
-layout(std430, binding = 2) buffer trcRayCountBuffer
-{
-  uint trcRays;
-  uint trcNearPlaneRays;
-  uint trcRaysTerminatedEarly;
-  uint trcMaximumLayers;
-  uint trcStepsLow;
-  uint trcStepsHigh;
-  uint trcMaximumSteps;
-  uint trcRaysStopped;
-  uint trcEmptyGroups;
-  uint trcRaysIncomplete;
-  uint trcEntriesAsked; // written by the CPU's copy of the entry count
-  uint trcMixedRays;    // rays with a piece where two or more volumes overlap
-};
-
-shared uint trcGroupRays;
-shared uint trcGroupNearPlaneRays;
-shared uint trcGroupTerminatedEarly;
-shared uint trcGroupMaximumLayers;
-shared uint trcGroupSteps;
-shared uint trcGroupMaximumSteps;
-shared uint trcGroupStopped;
-shared uint trcGroupIncomplete;
-shared uint trcGroupMixed;
 
 const int TRC_GROUP_MAXIMUM_STALLS = 64; // as TRC_MAXIMUM_STALLS of the walk
 const uint TRC_GROUP_NEAR_PLANE_KEY = 0xFFFFFFFEu;
@@ -171,81 +144,14 @@ void trcGroupMixture(bool inside[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS]
   }
 }
 
-//------------------------------------------------------------------------------
-// vtkTiledRayCastTraversalCS.glsl's trcNextEntry, for the entries of volume `member` only.
-uint trcGroupNextEntry(uint head, uint member, bool first, float exitLambda, float lastLambda,
-  uint lastKey, out float lambda, out uint key, out bool nearPlane)
-{
-  uint best = 0u;
-  lambda = 0.0;
-  key = 0u;
-  nearPlane = false;
-  for (uint node = head; node != 0u;)
-  {
-    uint i = TRC_ENTRY_WORDS * (node - 1u);
-    float l = uintBitsToFloat(trcEntryNodes[i]);
-    uint k = trcEntryNodes[i + 1u];
-    uint link = trcEntryNodes[i + 2u];
-    bool isNear = link >= TRC_NEAR_PLANE_ENTRY;
-    uint current = node;
-    node = link & ~TRC_NEAR_PLANE_ENTRY;
-    if (trcEntryNodes[i + 3u] != member)
-    {
-      continue;
-    }
-    if (!first)
-    {
-      if (isNear || l < exitLambda - in_peelEpsilon ||
-        (abs(l - lastLambda) <= in_peelEpsilon && k <= lastKey))
-      {
-        continue;
-      }
-    }
-    bool better = best == 0u || (isNear && !nearPlane) ||
-      (isNear == nearPlane && (l < lambda || (l == lambda && k < key)));
-    if (better)
-    {
-      best = current;
-      lambda = l;
-      key = k;
-      nearPlane = isNear;
-    }
-  }
-  return best;
-}
-
 void main()
 {
-  if (gl_LocalInvocationIndex == 0u)
-  {
-    trcGroupRays = 0u;
-    trcGroupNearPlaneRays = 0u;
-    trcGroupTerminatedEarly = 0u;
-    trcGroupMaximumLayers = 0u;
-    trcGroupSteps = 0u;
-    trcGroupMaximumSteps = 0u;
-    trcGroupStopped = 0u;
-    trcGroupIncomplete = 0u;
-    trcGroupMixed = 0u;
-  }
+  trcClearGroupCounts();
   barrier();
 
-  // The pixels of vtkTiledRayCastTraversalCS.glsl: four 4x2 blocks per 8x4 workgroup.
-  uint lane = gl_LocalInvocationIndex;
-  ivec2 inBlock = ivec2(lane & 3u, (lane >> 2u) & 1u);
-  ivec2 block = ivec2((lane >> 3u) & 1u, lane >> 4u);
-  ivec2 pixel = ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
+  ivec2 pixel = trcTilePixel();
   bool inImage = all(lessThan(pixel, in_imageSize));
-  uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
-  uint head = word & TRC_ENTRY_NODE;
-  if (word != 0u)
-  {
-    imageStore(in_entryHeads, pixel, uvec4(0u));
-  }
-  if ((word & TRC_ENTRY_LOST) != 0u)
-  {
-    atomicAdd(trcGroupIncomplete, 1u);
-  }
+  uint head = trcTakeEntries(pixel, inImage);
   vec4 color = vec4(0.0);
   if (head != 0u)
   {
@@ -296,8 +202,8 @@ void main()
       sb[m] = 0.0;
       lastLambda[m] = 0.0;
       lastKey[m] = 0u;
-      pending[m] = trcGroupNextEntry(head, uint(m), true, 0.0, 0.0, 0u, entryLambda[m],
-                     entryKey[m], entryNear[m]) != 0u;
+      pending[m] = trcNextEntry(head, uint(m), true, 0.0, 0.0, 0u, entryLambda[m], entryKey[m],
+                     entryNear[m]) != 0u;
     }
     int steps = 0;
     uint layers = 0u;
@@ -397,8 +303,8 @@ void main()
           stopped = stopped || layerSteps[m] >= in_maximumSteps;
           inside[m] = false;
           walks = false;
-          pending[m] = trcGroupNextEntry(head, uint(m), false, from[m], lastLambda[m],
-                         lastKey[m], entryLambda[m], entryKey[m], entryNear[m]) != 0u;
+          pending[m] = trcNextEntry(head, uint(m), false, from[m], lastLambda[m], lastKey[m],
+                         entryLambda[m], entryKey[m], entryNear[m]) != 0u;
           entryLambda[m] = max(entryLambda[m], from[m]);
         }
       }
@@ -451,24 +357,5 @@ void main()
   }
 
   barrier();
-  if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u)
-  {
-    atomicAdd(trcEmptyGroups, 1u);
-  }
-  if (gl_LocalInvocationIndex == 0u && trcGroupRays > 0u)
-  {
-    atomicAdd(trcRays, trcGroupRays);
-    atomicAdd(trcNearPlaneRays, trcGroupNearPlaneRays);
-    atomicAdd(trcRaysTerminatedEarly, trcGroupTerminatedEarly);
-    atomicMax(trcMaximumLayers, trcGroupMaximumLayers);
-    atomicMax(trcMaximumSteps, trcGroupMaximumSteps);
-    atomicAdd(trcRaysStopped, trcGroupStopped);
-    atomicAdd(trcRaysIncomplete, trcGroupIncomplete);
-    atomicAdd(trcMixedRays, trcGroupMixed);
-    uint before = atomicAdd(trcStepsLow, trcGroupSteps);
-    if (before + trcGroupSteps < before)
-    {
-      atomicAdd(trcStepsHigh, 1u);
-    }
-  }
+  trcAddGroupCounts();
 }
