@@ -145,50 +145,8 @@ bool CheckScene(Scene& scene, const trctest::Bounds& bounds, const std::string& 
   reference->SetCamera(scene.Renderer->GetActiveCamera());
   reference->SetImageSize(width, height);
   reference->SetOpaqueDepth(depth);
-  if (!reference->Render())
-  {
-    std::cerr << label << ": the reference renderer failed\n";
-    return false;
-  }
-  vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetArray("RGBA");
-  vtkNew<vtkUnsignedCharArray> composited;
-  composited->SetName("RGB");
-  composited->SetNumberOfComponents(3);
-  composited->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  for (vtkIdType i = 0; i < composited->GetNumberOfTuples(); ++i)
-  {
-    const double alpha = rgba->GetComponent(i, 3);
-    for (int c = 0; c < 3; ++c)
-    {
-      const double value =
-        rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
-      composited->SetValue(3 * i + c,
-        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
-    }
-  }
-  vtkNew<vtkImageData> expected;
-  expected->SetDimensions(width, height, 1);
-  expected->GetPointData()->SetScalars(composited);
-  vtkNew<vtkImageData> actual;
-  actual->SetDimensions(width, height, 1);
-  pixels->SetName("RGB");
-  actual->GetPointData()->SetScalars(pixels);
-  double stats[3] = { 0, 0, 0 };
-  if (!vtkTetReferenceRenderer::CompareImages(actual, expected, stats))
-  {
-    std::cerr << label << ": images cannot be compared\n";
-    return false;
-  }
-  std::cout << label << " vs exact reference (1/255): RMSE " << stats[0] << ", 99.9th percentile "
-            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", " << bounds.P999
-            << ", " << bounds.Max << ")\n";
-  std::cout << label << ": " << scene.Mappers[0]->GetStatistics()->GetSummary() << "\n";
-  const bool ok = stats[0] <= bounds.RMSE && stats[1] <= bounds.P999 && stats[2] <= bounds.Max;
-  if (!ok)
-  {
-    std::cerr << label << ": difference to the exact reference exceeds its bounds\n";
-  }
-  return ok;
+  return trctest::CompareWithReference(
+    reference, behind, pixels, width, height, bounds, label, scene.Mappers[0]);
 }
 
 // A scene of volumes that overlap: one traversal with rays through their mixture, within the

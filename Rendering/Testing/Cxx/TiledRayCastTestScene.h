@@ -129,6 +129,62 @@ struct Bounds
   double Max = 2.0;
 };
 
+// Renders `reference` (set up for the scene, its opaque depth the window's), composites it over
+// `behind` (the window's pixels without the volumes) and compares that with `pixels` (the
+// window's pixels with them), both width x height RGB, within `bounds`; prints the differences
+// and `mapper`'s statistics. The end of CheckAgainstReference, shared with the tests of scenes
+// of several volumes (TestTiledRayCastOverlapping).
+inline bool CompareWithReference(vtkTetReferenceRenderer* reference, vtkUnsignedCharArray* behind,
+  vtkUnsignedCharArray* pixels, int width, int height, const Bounds& bounds,
+  const std::string& label, vtkTiledRayCastVolumeMapper* mapper)
+{
+  if (!reference->Render())
+  {
+    std::cerr << label << ": the reference renderer failed\n";
+    return false;
+  }
+  // The premultiplied reference over what lies behind, rounded as a framebuffer does.
+  vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetArray("RGBA");
+  vtkNew<vtkUnsignedCharArray> composited;
+  composited->SetName("RGB");
+  composited->SetNumberOfComponents(3);
+  composited->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
+  for (vtkIdType i = 0; i < composited->GetNumberOfTuples(); ++i)
+  {
+    const double alpha = rgba->GetComponent(i, 3);
+    for (int c = 0; c < 3; ++c)
+    {
+      const double value =
+        rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
+      composited->SetValue(3 * i + c,
+        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
+    }
+  }
+  vtkNew<vtkImageData> expected;
+  expected->SetDimensions(width, height, 1);
+  expected->GetPointData()->SetScalars(composited);
+  vtkNew<vtkImageData> actual;
+  actual->SetDimensions(width, height, 1);
+  pixels->SetName("RGB");
+  actual->GetPointData()->SetScalars(pixels);
+  double stats[3] = { 0, 0, 0 };
+  if (!vtkTetReferenceRenderer::CompareImages(actual, expected, stats))
+  {
+    std::cerr << label << ": images cannot be compared\n";
+    return false;
+  }
+  std::cout << label << " vs exact reference (1/255): RMSE " << stats[0] << ", 99.9th percentile "
+            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", " << bounds.P999
+            << ", " << bounds.Max << ")\n";
+  std::cout << label << ": " << mapper->GetStatistics()->GetSummary() << "\n";
+  const bool ok = stats[0] <= bounds.RMSE && stats[1] <= bounds.P999 && stats[2] <= bounds.Max;
+  if (!ok)
+  {
+    std::cerr << label << ": difference to the exact reference exceeds its bounds\n";
+  }
+  return ok;
+}
+
 // Renders the exact reference of what `volume` shows in `renderer` (same camera, viewport size,
 // volume matrix, opaque depth from the window's depth buffer and background), reads the window's
 // pixels and compares. Prints the figures; returns false when a bound is exceeded. The window
@@ -191,52 +247,7 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
   {
     configure(reference);
   }
-  if (!reference->Render())
-  {
-    std::cerr << label << ": the reference renderer failed\n";
-    return false;
-  }
-  // Composite the premultiplied reference over what lies behind, rounded as a framebuffer does.
-  vtkDataArray* rgba = reference->GetOutput()->GetPointData()->GetArray("RGBA");
-  vtkNew<vtkUnsignedCharArray> composited;
-  composited->SetName("RGB");
-  composited->SetNumberOfComponents(3);
-  composited->SetNumberOfTuples(static_cast<vtkIdType>(width) * height);
-  for (vtkIdType i = 0; i < composited->GetNumberOfTuples(); ++i)
-  {
-    const double alpha = rgba->GetComponent(i, 3);
-    for (int c = 0; c < 3; ++c)
-    {
-      const double value =
-        rgba->GetComponent(i, c) + (1.0 - alpha) * behind->GetValue(3 * i + c) / 255.0;
-      composited->SetValue(3 * i + c,
-        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(value, 0.0), 1.0))));
-    }
-  }
-  vtkNew<vtkImageData> expected;
-  expected->SetDimensions(width, height, 1);
-  expected->GetPointData()->SetScalars(composited);
-
-  vtkNew<vtkImageData> actual;
-  actual->SetDimensions(width, height, 1);
-  pixels->SetName("RGB");
-  actual->GetPointData()->SetScalars(pixels);
-  double stats[3] = { 0, 0, 0 };
-  if (!vtkTetReferenceRenderer::CompareImages(actual, expected, stats))
-  {
-    std::cerr << label << ": images cannot be compared\n";
-    return false;
-  }
-  std::cout << label << " vs exact reference (1/255): RMSE " << stats[0] << ", 99.9th percentile "
-            << stats[1] << ", max " << stats[2] << " (bounds " << bounds.RMSE << ", " << bounds.P999
-            << ", " << bounds.Max << ")\n";
-  std::cout << label << ": " << mapper->GetStatistics()->GetSummary() << "\n";
-  const bool ok = stats[0] <= bounds.RMSE && stats[1] <= bounds.P999 && stats[2] <= bounds.Max;
-  if (!ok)
-  {
-    std::cerr << label << ": difference to the exact reference exceeds its bounds\n";
-  }
-  return ok;
+  return CompareWithReference(reference, behind, pixels, width, height, bounds, label, mapper);
 }
 }
 
