@@ -20,6 +20,7 @@
 // Usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] mesh.vtu...
 // Statistics are synchronous (each frame's GPU times are read before the next frame), so the
 // wall clock includes that wait.
+#include "BenchmarkFrames.h"
 #include "TiledRayCastSharedScenes.h"
 
 #include "vtkCamera.h"
@@ -35,7 +36,6 @@
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cmath>
@@ -48,17 +48,6 @@
 
 namespace
 {
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 // The points of frame `frame` of `mode` from the rest positions (x, y, z per point).
 void Deform(const std::vector<double>& rest, const double centre[3], double size,
   const std::string& mode, int frame, int frames, vtkPoints* points)
@@ -91,53 +80,37 @@ void Deform(const std::vector<double>& rest, const double centre[3], double size
 
 int main(int argc, char* argv[])
 {
-  int size = 1024;
-  int frames = 20;
-  std::string csv;
-  std::vector<std::string> meshes;
+  trcbench::Options options;
+  options.MinimumFrames = 2;
   for (int i = 1; i < argc; ++i)
   {
-    if (!std::strcmp(argv[i], "--size") && i + 1 < argc)
+    if (!trcbench::ReadOption(argc, argv, i, options))
     {
-      size = std::atoi(argv[++i]);
-    }
-    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
-    {
-      frames = std::max(2, std::atoi(argv[++i]));
-    }
-    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
-    {
-      csv = argv[++i];
-    }
-    else
-    {
-      meshes.emplace_back(argv[i]);
+      options.Meshes.emplace_back(argv[i]);
     }
   }
-  if (meshes.empty())
+  const int size = options.Size;
+  const int frames = options.Frames;
+  if (options.Meshes.empty())
   {
     std::cerr << "usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] mesh.vtu...\n";
     return EXIT_FAILURE;
   }
   std::ofstream out;
-  if (!csv.empty())
+  if (!options.Csv.empty())
   {
-    out.open(csv);
+    out.open(options.Csv);
     out << "mesh,tets,points,mode,image_size,frames,move_points_ms,mesh_build_ms,mapper_cpu_ms,"
            "gpu_ms,wall_ms,uploaded_mb_per_frame,first_frame_ms\n";
   }
-  for (const std::string& path : meshes)
+  for (const std::string& path : options.Meshes)
   {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
-    if (grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
+    vtkSmartPointer<vtkUnstructuredGrid> grid = trcbench::ReadMesh(path);
+    if (!grid)
     {
-      std::cerr << path << ": no cells or no point scalars; skipped\n";
       continue;
     }
-    const std::string mesh = path.substr(path.find_last_of('/') + 1);
+    const std::string mesh = trcbench::MeshName(path);
     for (const std::string mode : { "wave", "invert" })
     {
       // Points of our own, in double, so that moving them is the application's usual work.
@@ -171,21 +144,10 @@ int main(int argc, char* argv[])
       renderer->SetBackground(0, 0, 0);
       renderer->AddVolume(volume);
       vtkNew<vtkRenderWindow> window;
-      window->SetOffScreenRendering(1);
-      window->SetMultiSamples(0);
-      window->SetSize(size, size);
-      window->AddRenderer(renderer);
-      renderer->ResetCamera();
-      renderer->GetActiveCamera()->Azimuth(30);
-      renderer->GetActiveCamera()->Elevation(20);
-      renderer->ResetCameraClippingRange();
+      trcbench::SetUpWindow(window, renderer, size);
 
       vtkNew<vtkTimerLog> timer;
-      timer->StartTimer();
-      window->Render();
-      window->WaitForCompletion();
-      timer->StopTimer();
-      const double first = 1000.0 * timer->GetElapsedTime();
+      const double first = trcbench::TimeFrame(window, timer);
       vtkTiledRayCastStatistics* stats = mapper->GetStatistics();
       std::vector<double> move, build, cpu, gpu, wall, uploaded;
       for (int f = 1; f <= frames; ++f)
@@ -207,16 +169,18 @@ int main(int argc, char* argv[])
         wall.push_back(1000.0 * frameTimer->GetElapsedTime());
         uploaded.push_back(stats->GetUploadedBytes() / (1024.0 * 1024.0)); // this frame's
       }
-      std::cout << mesh << " " << mode << " " << size << "^2: move " << Median(move)
-                << " ms, mesh build " << Median(build) << " ms, mapper CPU " << Median(cpu)
-                << " ms, GPU " << Median(gpu) << " ms, wall " << Median(wall) << " ms, upload "
-                << Median(uploaded) << " MB a frame (first frame " << first << " ms)\n";
+      std::cout << mesh << " " << mode << " " << size << "^2: move " << trcbench::Median(move)
+                << " ms, mesh build " << trcbench::Median(build) << " ms, mapper CPU "
+                << trcbench::Median(cpu) << " ms, GPU " << trcbench::Median(gpu) << " ms, wall "
+                << trcbench::Median(wall) << " ms, upload " << trcbench::Median(uploaded)
+                << " MB a frame (first frame " << first << " ms)\n";
       if (out)
       {
         out << mesh << "," << grid->GetNumberOfCells() << "," << grid->GetNumberOfPoints() << ","
-            << mode << "," << size << "," << frames << "," << Median(move) << ","
-            << Median(build) << "," << Median(cpu) << "," << Median(gpu) << "," << Median(wall)
-            << "," << Median(uploaded) << "," << first << "\n";
+            << mode << "," << size << "," << frames << "," << trcbench::Median(move) << ","
+            << trcbench::Median(build) << "," << trcbench::Median(cpu) << ","
+            << trcbench::Median(gpu) << "," << trcbench::Median(wall) << ","
+            << trcbench::Median(uploaded) << "," << first << "\n";
       }
     }
   }

@@ -19,6 +19,7 @@
 //          mesh.vtu...
 // Each frame turns the camera by 1 degree about the focal point. Statistics are synchronous
 // (each frame's GPU times read before the next), so the wall clock includes that wait.
+#include "BenchmarkFrames.h"
 #include "TiledRayCastSharedScenes.h"
 
 #include "vtkCamera.h"
@@ -32,7 +33,6 @@
 #include "vtkTimerLog.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
-#include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -45,17 +45,6 @@
 
 namespace
 {
-double Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 struct Result
 {
   double FirstMs = 0;
@@ -86,36 +75,21 @@ Result Run(vtkUnstructuredGrid* grid, int copies, int size, int frames, double s
     mappers.push_back(mapper);
   }
   vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(size, size);
-  window->AddRenderer(renderer);
-  renderer->ResetCamera();
-  renderer->GetActiveCamera()->Azimuth(30);
-  renderer->GetActiveCamera()->Elevation(20);
-  renderer->ResetCameraClippingRange();
+  trcbench::SetUpWindow(window, renderer, size);
 
   Result result;
   vtkNew<vtkTimerLog> timer;
-  timer->StartTimer();
-  window->Render();
-  window->WaitForCompletion();
-  timer->StopTimer();
-  result.FirstMs = 1000.0 * timer->GetElapsedTime();
+  result.FirstMs = trcbench::TimeFrame(window, timer);
   std::vector<double> wall, gpu;
   vtkTiledRayCastStatistics* stats = mappers.front()->GetStatistics();
   for (int f = 0; f < frames; ++f)
   {
     renderer->GetActiveCamera()->Azimuth(1);
-    timer->StartTimer();
-    window->Render();
-    window->WaitForCompletion();
-    timer->StopTimer();
-    wall.push_back(1000.0 * timer->GetElapsedTime());
+    wall.push_back(trcbench::TimeFrame(window, timer));
     gpu.push_back(stats->GetTotalGPUTime());
   }
-  result.WallMs = Median(wall);
-  result.GpuMs = Median(gpu);
+  result.WallMs = trcbench::Median(wall);
+  result.GpuMs = trcbench::Median(gpu);
   result.Grouped = stats->GetNumberOfGroupedVolumes();
   result.Rays = stats->GetNumberOfRays();
   result.MixedRays = stats->GetNumberOfMixedRays();
@@ -131,23 +105,17 @@ Result Run(vtkUnstructuredGrid* grid, int copies, int size, int frames, double s
 
 int main(int argc, char* argv[])
 {
-  int size = 1024;
-  int frames = 10;
+  trcbench::Options options;
+  options.Frames = 10;
   std::vector<int> counts = { 1, 2, 4 };
   double shift = 0.03;
-  std::string csv;
-  std::vector<std::string> meshes;
   for (int i = 1; i < argc; ++i)
   {
-    if (!std::strcmp(argv[i], "--size") && i + 1 < argc)
+    if (trcbench::ReadOption(argc, argv, i, options))
     {
-      size = std::atoi(argv[++i]);
+      continue;
     }
-    else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc)
-    {
-      frames = std::max(1, std::atoi(argv[++i]));
-    }
-    else if (!std::strcmp(argv[i], "--counts") && i + 1 < argc)
+    if (!std::strcmp(argv[i], "--counts") && i + 1 < argc)
     {
       counts.clear();
       std::istringstream list(argv[++i]);
@@ -161,40 +129,34 @@ int main(int argc, char* argv[])
     {
       shift = std::atof(argv[++i]);
     }
-    else if (!std::strcmp(argv[i], "--csv") && i + 1 < argc)
-    {
-      csv = argv[++i];
-    }
     else
     {
-      meshes.emplace_back(argv[i]);
+      options.Meshes.emplace_back(argv[i]);
     }
   }
-  if (meshes.empty() || counts.empty())
+  const int size = options.Size;
+  const int frames = options.Frames;
+  if (options.Meshes.empty() || counts.empty())
   {
     std::cerr << "usage: BenchmarkOverlappingVolumes [--size N] [--frames N] [--counts 1,2,4] "
                  "[--shift f] [--csv file] mesh.vtu...\n";
     return EXIT_FAILURE;
   }
   std::ofstream out;
-  if (!csv.empty())
+  if (!options.Csv.empty())
   {
-    out.open(csv);
+    out.open(options.Csv);
     out << "mesh,tets,volumes,shift,grouped,image_size,frames,first_frame_ms,wall_ms,gpu_ms,rays,"
            "mixed_rays,tets_per_ray\n";
   }
-  for (const std::string& path : meshes)
+  for (const std::string& path : options.Meshes)
   {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkUnstructuredGrid* grid = reader->GetOutput();
-    if (grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
+    vtkSmartPointer<vtkUnstructuredGrid> grid = trcbench::ReadMesh(path);
+    if (!grid)
     {
-      std::cerr << path << ": no cells or no point scalars; skipped\n";
       continue;
     }
-    const std::string mesh = path.substr(path.find_last_of('/') + 1);
+    const std::string mesh = trcbench::MeshName(path);
     for (int copies : counts)
     {
       const Result r = Run(grid, copies, size, frames, shift);
