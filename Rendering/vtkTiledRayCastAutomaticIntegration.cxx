@@ -47,21 +47,15 @@ struct vtkTiledRayCastAutomaticIntegration::Job
       {
         return;
       }
-      const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
       vtkSmartPointer<vtkTiledRayCastPreIntegrationTable> table =
         vtkSmartPointer<vtkTiledRayCastPreIntegrationTable>::New();
-      table->SetDimension(is3D ? 3 : 2);
-      table->SetRequestedScalarSize(this->Inputs.RequestedScalarSize);
-      table->SetRequestedLengthSize(this->Inputs.RequestedLengthSize);
-      table->SetMaximumSize(is3D ? this->Inputs.Max3DTextureSize : this->Inputs.MaxTextureSize);
-      table->SetMaximumLength(this->Inputs.MaximumLength);
-      table->SetReferenceLength(this->Inputs.ReferenceLength);
+      vtkTiledRayCastAutomaticIntegration::Configure(table, this->Inputs, mode);
       if (!table->Update(this->Property, transferFunction, this->Inputs.ScalarRange))
       {
         return;
       }
       const double error = this->Predictor.PredictError(table);
-      this->Result.PredictedErrors.push_back(error);
+      this->Result.TablesTried.push_back({ mode, error, this->Predictor.GetWorstSegmentError() });
       if (error <= this->Inputs.MaximumError)
       {
         this->Result.Mode = mode;
@@ -75,6 +69,19 @@ struct vtkTiledRayCastAutomaticIntegration::Job
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastAutomaticIntegration::vtkTiledRayCastAutomaticIntegration() = default;
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastAutomaticIntegration::Configure(
+  vtkTiledRayCastPreIntegrationTable* table, const Settings& settings, int mode)
+{
+  const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
+  table->SetDimension(is3D ? 3 : 2);
+  table->SetRequestedScalarSize(settings.RequestedScalarSize);
+  table->SetRequestedLengthSize(settings.RequestedLengthSize);
+  table->SetMaximumSize(is3D ? settings.Max3DTextureSize : settings.MaxTextureSize);
+  table->SetMaximumLength(settings.MaximumLength);
+  table->SetReferenceLength(settings.ReferenceLength);
+}
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastAutomaticIntegration::~vtkTiledRayCastAutomaticIntegration()
@@ -120,7 +127,6 @@ void vtkTiledRayCastAutomaticIntegration::Start(
   job->Inputs = settings;
   this->Current = job;
   this->CurrentDone = std::async(std::launch::async, [job]() { job->Run(); });
-  ++this->Started;
 }
 
 //------------------------------------------------------------------------------

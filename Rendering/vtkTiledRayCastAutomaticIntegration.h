@@ -46,7 +46,8 @@ public:
   ~vtkTiledRayCastAutomaticIntegration();
 
   /**
-   * What the tables are built for (vtkTiledRayCastIntegration::ConfigureTable's settings).
+   * What a table is built for: the explicit table modes' (vtkTiledRayCastIntegration) and the
+   * choice's alike, through Configure().
    */
   struct Settings
   {
@@ -61,6 +62,23 @@ public:
   };
 
   /**
+   * Set `table` up for `mode` (PRE_INTEGRATION_2D or PRE_INTEGRATION_3D) and `settings` (it is
+   * built by its Update()).
+   */
+  static void Configure(
+    vtkTiledRayCastPreIntegrationTable* table, const Settings& settings, int mode);
+
+  /**
+   * A table the choice tried: its mode, predicted error and worst single segment, in 1/255.
+   */
+  struct Tried
+  {
+    int Mode;
+    double PredictedError;
+    double WorstSegmentError;
+  };
+
+  /**
    * A choice: the mode, its predicted error in 1/255 (0 for partial pre-integration), and the
    * table of a table mode, built for the property given to Start().
    */
@@ -68,7 +86,7 @@ public:
   {
     int Mode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
     double PredictedError = 0.0;
-    std::vector<double> PredictedErrors; // of each table tried, in order (2D, then 3D)
+    std::vector<Tried> TablesTried; // in order: the 2D table, then the 3D table
     vtkSmartPointer<vtkTiledRayCastPreIntegrationTable> Table;
   };
 
@@ -85,16 +103,6 @@ public:
    */
   bool Take(Choice& choice, bool wait);
 
-  /**
-   * Whether a choice is being made.
-   */
-  bool IsChoosing() const { return this->Current != nullptr; }
-
-  /**
-   * The number of choices started (for tests).
-   */
-  int GetNumberOfChoicesStarted() const { return this->Started; }
-
 private:
   vtkTiledRayCastAutomaticIntegration(const vtkTiledRayCastAutomaticIntegration&) = delete;
   void operator=(const vtkTiledRayCastAutomaticIntegration&) = delete;
@@ -106,7 +114,6 @@ private:
   std::shared_ptr<Job> Current;
   std::future<void> CurrentDone;
   std::vector<std::pair<std::shared_ptr<Job>, std::future<void>>> Abandoned;
-  int Started = 0;
 };
 
 #endif

@@ -104,7 +104,8 @@ bool vtkTiledRayCastIntegration::Update(
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
     if (self->GetIntegrationMode() != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
     {
-      this->ConfigureTable(frame, mode);
+      vtkTiledRayCastAutomaticIntegration::Configure(
+        table, this->TableSettings(frame, false), mode);
       table->Update(property, this->TransferFunction, frame.ScalarRange);
     }
     if (!this->Textures.UpdateTable(window, table, mode, self, uploaded, error))
@@ -124,18 +125,26 @@ bool vtkTiledRayCastIntegration::Update(
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastIntegration::ConfigureTable(const Frame& frame, int mode)
+vtkTiledRayCastAutomaticIntegration::Settings vtkTiledRayCastIntegration::TableSettings(
+  const Frame& frame, bool quantized)
 {
   vtkTiledRayCastVolumeMapper* self = frame.Mapper;
-  vtkTiledRayCastPreIntegrationTable* table = this->Table;
-  const bool is3D = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D;
-  table->SetDimension(is3D ? 3 : 2);
-  table->SetRequestedScalarSize(self->GetPreIntegrationTableScalarSize());
-  table->SetRequestedLengthSize(self->GetPreIntegrationTableLengthSize());
-  table->SetMaximumSize(is3D ? frame.Max3DTextureSize : frame.MaxTextureSize);
+  vtkTiledRayCastAutomaticIntegration::Settings settings;
+  std::copy(frame.ScalarRange, frame.ScalarRange + 2, settings.ScalarRange);
+  settings.MaximumError = self->GetMaximumError();
+  settings.RequestedScalarSize = self->GetPreIntegrationTableScalarSize();
+  settings.RequestedLengthSize = self->GetPreIntegrationTableLengthSize();
+  settings.MaxTextureSize = frame.MaxTextureSize;
+  settings.Max3DTextureSize = frame.Max3DTextureSize;
   // Lengths are in world units: the volume's matrix stretches them by at most its norm.
-  table->SetMaximumLength(frame.LongestEdge * frame.ObjectToWorldNorm);
-  table->SetReferenceLength(0.5 * frame.TypicalEdge * frame.ObjectToWorldNorm / std::sqrt(3.0));
+  const double longest = frame.LongestEdge * frame.ObjectToWorldNorm;
+  const double reference = 0.5 * frame.TypicalEdge * frame.ObjectToWorldNorm / std::sqrt(3.0);
+  // The automatic mode's lengths in steps of 2^(1/8): a mesh whose points move (a deforming mesh,
+  // every frame) keeps its choice and table while its edges stay within a step; the table then
+  // covers lengths up to the step above the longest edge.
+  settings.MaximumLength = quantized ? Quantized(longest, std::ceil) : longest;
+  settings.ReferenceLength = quantized ? Quantized(reference, std::round) : reference;
+  return settings;
 }
 
 //------------------------------------------------------------------------------
@@ -143,35 +152,20 @@ void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolume
 {
   vtkTetMesh* mesh = frame.Mesh;
   vtkTiledRayCastVolumeMapper* self = frame.Mapper;
-  const double norm = frame.ObjectToWorldNorm;
-  // Lengths in steps of 2^(1/8): a mesh whose points move (a deforming mesh, every frame) keeps
-  // its choice and table while its edges stay within a step; the table then covers lengths up
-  // to the step above the longest edge.
-  const double longest = Quantized(frame.LongestEdge * norm, std::ceil);
-  const double reference = Quantized(0.5 * frame.TypicalEdge * norm / std::sqrt(3.0), std::round);
+  const vtkTiledRayCastAutomaticIntegration::Settings settings = this->TableSettings(frame, true);
   // The transfer function by its nodes, not its time: reading a property's functions (as the
   // copy for the worker does) may create its default ones and touch its time.
   const std::vector<float>& nodes = this->TransferFunction->GetNodeTexels();
   std::vector<double> key(nodes.begin(), nodes.end());
   key.insert(key.end(),
     { static_cast<double>(mesh->GetTopologyTime()), static_cast<double>(mesh->GetScalarsTime()),
-      longest, reference, self->GetMaximumError(),
+      settings.MaximumLength, settings.ReferenceLength, self->GetMaximumError(),
       static_cast<double>(self->GetPreIntegrationTableScalarSize()),
       static_cast<double>(self->GetPreIntegrationTableLengthSize()) });
   if (key != this->ChoiceKey)
   {
-
     this->ChoiceKey = key;
-    vtkTiledRayCastAutomaticIntegration::Settings settings;
-    std::copy(frame.ScalarRange, frame.ScalarRange + 2, settings.ScalarRange);
-    settings.MaximumError = self->GetMaximumError();
-    settings.RequestedScalarSize = self->GetPreIntegrationTableScalarSize();
-    settings.RequestedLengthSize = self->GetPreIntegrationTableLengthSize();
-    settings.MaxTextureSize = frame.MaxTextureSize;
-    settings.Max3DTextureSize = frame.Max3DTextureSize;
-    settings.MaximumLength = longest;
-    settings.ReferenceLength = reference;
-    this->Automatic.Start(mesh, norm, property, settings);
+    this->Automatic.Start(mesh, frame.ObjectToWorldNorm, property, settings);
     // Exact until the choice is made: never a table that was not checked against the budget.
     this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
     this->PredictedError = 0.0;
@@ -188,12 +182,11 @@ void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolume
   {
     this->Table = choice.Table;
   }
-  for (size_t i = 0; i < choice.PredictedErrors.size(); ++i)
+  for (const vtkTiledRayCastAutomaticIntegration::Tried& tried : choice.TablesTried)
   {
-    vtkDebugWithObjectMacro(self, << "Automatic integration: "
-                                  << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(i == 0
-                                         ? vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D
-                                         : vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D)
-                                  << " predicted " << choice.PredictedErrors[i] << "/255");
+    vtkDebugWithObjectMacro(
+      self, << "Automatic integration: "
+            << vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(tried.Mode) << " predicted "
+            << tried.PredictedError << "/255 (worst segment " << tried.WorstSegmentError << ")");
   }
 }

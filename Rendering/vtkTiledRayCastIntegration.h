@@ -113,8 +113,10 @@ private:
   // The automatic mode's choice, made again (on a worker thread) when the transfer function,
   // the mesh, the lengths or the budget changed; partial pre-integration until it is made.
   void ChooseIntegration(const Frame& frame, vtkVolumeProperty* property);
-  // The table of a table mode, at the resolution and lengths it needs (not yet updated).
-  void ConfigureTable(const Frame& frame, int mode);
+  // What a table is built for in this frame: the lengths as they are (explicit table modes),
+  // or in steps of 2^(1/8) (`quantized`: the automatic mode's choice and its key).
+  static vtkTiledRayCastAutomaticIntegration::Settings TableSettings(
+    const Frame& frame, bool quantized);
 
   vtkNew<vtkTiledRayCastTransferFunction> TransferFunction;
   // The table of a table mode: built here for an explicit mode, by the choice for the automatic
