@@ -193,6 +193,10 @@ bool vtkTiledRayCastOpaqueDepth::Capture(vtkOpenGLRenderWindow* window, const in
   // render pass made it.
   vtkOpenGLState* state = window->GetState();
   const unsigned int format = vtkTiledRayCastOpaqueDepth::ReadFormat();
+  if (format == GL_NONE)
+  {
+    return this->SetFar(window, imageSize, error); // no depth buffer: nothing stops the rays
+  }
   if (!this->Allocate(window, format, width, height, error))
   {
     return false;
@@ -205,22 +209,11 @@ bool vtkTiledRayCastOpaqueDepth::Capture(vtkOpenGLRenderWindow* window, const in
   }
   state->PushDrawFramebufferBinding();
   this->Framebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-  this->HoldsFar = format == GL_NONE;
-  if (format == GL_NONE)
-  {
-    // Depth 1 everywhere: the rays run to the far plane.
-    vtkOpenGLState::ScopedglDepthMask depthMask(state);
-    state->vtkglDepthMask(GL_TRUE);
-    state->vtkglClearDepth(1.0);
-    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-  }
-  else
-  {
-    // One depth per ray: at an image sample distance above 1 the nearest of the pixels around
-    // the ray (a depth blit may scale, never filter).
-    state->vtkglBlitFramebuffer(origin[0], origin[1], origin[0] + width, origin[1] + height, 0, 0,
-      imageSize[0], imageSize[1], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  }
+  this->HoldsFar = false;
+  // One depth per ray: at an image sample distance above 1 the nearest of the pixels around the
+  // ray (a depth blit may scale, never filter).
+  state->vtkglBlitFramebuffer(origin[0], origin[1], origin[0] + width, origin[1] + height, 0, 0,
+    imageSize[0], imageSize[1], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
   state->PopDrawFramebufferBinding();
   const GLenum glError = glGetError();
   if (glError != GL_NO_ERROR)

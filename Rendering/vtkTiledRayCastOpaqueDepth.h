@@ -15,8 +15,8 @@
  * Capture() blits the depth of the caller's framebuffer (possibly multisampled) into a texture
  * of the same depth format (a depth blit needs the same format on both sides), one depth per
  * ray: at an image sample distance above 1 the nearest of the pixels around the ray. Without a
- * depth buffer the texture holds 1 everywhere. The texture only grows, and is reallocated when
- * the framebuffer's depth format changes.
+ * depth buffer the texture holds 1 everywhere (SetFar). The texture only grows, and is
+ * reallocated when the framebuffer's depth format changes.
  *
  * Where nothing drawn before the volumes can have written depth (SceneMayHaveDepth), the copy is
  * skipped: the texture is cleared to 1 once and kept so while the scene stays without depth
@@ -87,7 +87,7 @@ private:
   vtkNew<vtkTextureObject> Texture;
   vtkNew<vtkOpenGLFramebufferObject> Framebuffer;
   unsigned int Format = 0;
-  bool HoldsFar = false; // every texel is 1 (SetFar cleared it, nothing was copied since)
+  bool HoldsFar = false; // every texel is 1 (SetFar cleared it, nothing was blitted since)
 };
 
 #endif
