@@ -31,6 +31,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
 {
   this->Rendered = false;
   this->SceneDepthCopied = false;
+  this->DepthPeelingStage = 0;
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->NumberOfRays = 0;
   this->NumberOfLayers = 0;
@@ -123,8 +124,13 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
          << this->MaximumPassesPerTile << ")";
   }
   text << ", " << this->NumberOfRaysTerminatedEarly << " rays terminated early, "
-       << (this->SceneDepthCopied ? "scene depth copied, " : "no scene depth, ")
-       << this->NumberOfVisibleTetrahedra << " tets visible, " << this->NumberOfEntryFaces
+       << (this->SceneDepthCopied ? "scene depth copied, " : "no scene depth, ");
+  if (this->DepthPeelingStage > 0)
+  {
+    text << "depth peeling stage " << this->DepthPeelingStage << " (draw "
+         << this->NumberOfDepthPeelingDraws << " of the frame), ";
+  }
+  text << this->NumberOfVisibleTetrahedra << " tets visible, " << this->NumberOfEntryFaces
        << " entry faces; GPU ms: " << (compute ? "entry pass " : "first hit ")
        << this->FirstHitTime;
   if (!compute)
@@ -143,6 +149,8 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Rendered: " << this->Rendered << "\n";
   os << indent << "SceneDepthCopied: " << this->SceneDepthCopied << "\n";
+  os << indent << "DepthPeelingStage: " << this->DepthPeelingStage << "\n";
+  os << indent << "NumberOfDepthPeelingDraws: " << this->NumberOfDepthPeelingDraws << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";

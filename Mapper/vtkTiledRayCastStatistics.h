@@ -63,6 +63,22 @@ public:
 
   ///@{
   /**
+   * VTK's dual depth peeling for volumes (vtkRenderer::UseDepthPeelingForVolumes), where the
+   * volume takes part in it (the compute pipeline, composite blending): the stage of the last
+   * draw (0: outside the peeling; 1: before the first peel, the volume in front of and behind
+   * the translucent geometry; 2: a peel, the volume between this peel's fragments and the last
+   * one's; 3: the remainder after the last peel), and how many times the peeling has drawn the
+   * volume in the renderer's current frame (one traversal each: 1 + peels, + 1 for a
+   * remainder).
+   */
+  vtkSetMacro(DepthPeelingStage, int);
+  vtkGetMacro(DepthPeelingStage, int);
+  vtkSetMacro(NumberOfDepthPeelingDraws, int);
+  vtkGetMacro(NumberOfDepthPeelingDraws, int);
+  ///@}
+
+  ///@{
+  /**
    * Image size of the last render (of its rays: the viewport in pixels divided by the image
    * sample distance it used, vtkTiledRayCastVolumeMapper::SetImageSampleDistance), that
    * distance, and the number of rays that entered the mesh.
@@ -311,6 +327,8 @@ protected:
 
   bool Rendered = false;
   bool SceneDepthCopied = false;
+  int DepthPeelingStage = 0;
+  int NumberOfDepthPeelingDraws = 0;
   int ImageSize[2] = { 0, 0 };
   double ImageSampleDistance = 1.0;
   vtkIdType NumberOfRays = 0;

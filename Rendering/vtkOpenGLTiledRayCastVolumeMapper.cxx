@@ -145,6 +145,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.MaximumSteps = this->GetMaximumSteps();
   frame.PeelEpsilon = PeelEpsilon;
   frame.Verify = this->Self->SynchronousStatistics;
+  frame.PeelStage = this->PeelStage();
+  frame.Peel = &this->VolumetricPeel;
   std::copy(this->Geometry.NearPlane, this->Geometry.NearPlane + 3, frame.ViewDirection);
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
@@ -447,7 +449,9 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
     this->ReportError("The camera and volume matrices give no usable rays. Nothing is drawn.");
     return false;
   }
-  this->SceneDepth = vtkTiledRayCastOpaqueDepth::SceneMayHaveDepth(ren);
+  // Inside VTK's depth peeling the pass's depth ranges end the rays (its framebuffer has no
+  // depth to copy).
+  this->SceneDepth = this->PeelStage() == 0 && vtkTiledRayCastOpaqueDepth::SceneMayHaveDepth(ren);
   this->Lighting.Compute(ren, vol, self->BlendMode);
   this->GradientOpacity.Compute(property, self->BlendMode);
   this->WarnLighting();
@@ -466,13 +470,22 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   }
   // Interaction: fewer rays while a full frame would not fit the time the renderer allocated
   // the volume (vtkTiledRayCastSampleDistance).
-  this->FrameSampleDistance = this->SampleDistance.Choose(self->AutoAdjustSampleDistances != 0,
-    self->ImageSampleDistance, self->MinimumImageSampleDistance, self->MaximumImageSampleDistance,
-    vol->GetAllocatedRenderTime());
+  // Inside VTK's depth peeling, one ray per pixel of the pass's textures.
+  this->FrameSampleDistance = this->PeelStage() > 0
+    ? 1.0
+    : this->SampleDistance.Choose(self->AutoAdjustSampleDistances != 0, self->ImageSampleDistance,
+        self->MinimumImageSampleDistance, self->MaximumImageSampleDistance,
+        vol->GetAllocatedRenderTime());
   vtkTiledRayCastSampleDistance::ComputeImageSize(width, height, this->FrameSampleDistance, rays);
   if (!this->UploadMesh(window) || !this->UpdateTransferFunction(property, window) ||
     !this->UpdateVisibleMesh(window) || !this->UpdatePrograms(window) ||
     (targets && !this->UpdateTargets(window, rays[0], rays[1])))
+  {
+    return false;
+  }
+  std::string error;
+  if (targets && this->PeelStage() > 0 &&
+    !this->Reported(this->Compute.PreparePeel(window, this->PeelStage(), error), error))
   {
     return false;
   }
@@ -582,17 +595,20 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
-  if (impl->Deferred.Defer(ren, vol))
+  // VTK's dual depth peeling for volumes draws the volume once per stage of its peeling and
+  // asks for the volume between depths of its own (vtkTiledRayCastVolumetricPeel): the compute
+  // pipeline takes part. Where the volume cannot, it draws nothing in the peels and draws the
+  // volume once the renderer has finished, over the composited scene, as without depth peeling
+  // for volumes (the translucent-geometry warning below says so, once).
+  if (impl->VolumetricPeel.Update(this, vol) != vtkTiledRayCastVolumetricPeel::NotPeeling &&
+    !impl->TakesPartInPeeling() && impl->Deferred.Defer(ren, vol))
   {
-    // VTK's dual depth peeling hands volumes depth ranges through shader replacements written
-    // for its image ray caster, which this mapper cannot take part in yet: it draws nothing in
-    // the peels and draws the volume once the renderer has finished, over the composited scene,
-    // as it does without depth peeling for volumes (the translucent-geometry warning below says
-    // so, once).
     return;
   }
-
-  impl->WarnTranslucentGeometry(ren, vol);
+  if (!impl->TakesPartInPeeling())
+  {
+    impl->WarnTranslucentGeometry(ren, vol);
+  }
   if (!impl->CheckBlendMode())
   {
     return;
@@ -620,9 +636,17 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return;
   }
+  if (impl->PeelStage() > 0)
+  {
+    // The peeling pass draws into textures of the viewport's size, from their origin.
+    impl->Viewport[0] = impl->Viewport[1] = 0;
+  }
 
-  // Overlapping volumes of our mappers: the first drawn draws them all in one traversal.
-  impl->GroupSize = vtkTiledRayCastVolumeGroup::Render(ren, window, impl->FindGroup(ren, vol));
+  // Overlapping volumes of our mappers: the first drawn draws them all in one traversal (not
+  // inside VTK's depth peeling, which draws each volume on its own).
+  impl->GroupSize = impl->PeelStage() > 0
+    ? 1
+    : vtkTiledRayCastVolumeGroup::Render(ren, window, impl->FindGroup(ren, vol));
   if (impl->GroupSize > 1)
   {
     impl->WarnAfterFrame();
@@ -652,6 +676,12 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   vtkInternals* impl = this->Impl;
   vtkTiledRayCastStatistics* stats = this->Statistics;
   stats->SetRendered(true);
+  // The peeling draws the volume 1 + peels (+ 1) times a frame, from stage 1 (BeforePeels).
+  const int stage = impl->PeelStage();
+  stats->SetDepthPeelingStage(stage);
+  stats->SetNumberOfDepthPeelingDraws(stage == 0 ? 0
+      : stage == 1                               ? 1
+                                                 : stats->GetNumberOfDepthPeelingDraws() + 1);
   stats->SetImageSize(impl->ImageSize);
   stats->SetNumberOfGroupedVolumes(impl->GroupSize);
   stats->SetImageSampleDistance(impl->FrameSampleDistance);

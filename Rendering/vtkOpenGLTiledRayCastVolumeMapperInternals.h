@@ -41,6 +41,7 @@
 #include "vtkTiledRayCastUniforms.h"             // For vtkTiledRayCastUniforms
 #include "vtkTiledRayCastVisibleMesh.h"          // For vtkTiledRayCastVisibleMesh
 #include "vtkTiledRayCastVolumeGroup.h"          // For vtkTiledRayCastGroupMember
+#include "vtkTiledRayCastVolumetricPeel.h"       // For vtkTiledRayCastVolumetricPeel
 #include "vtkTiledRayCastWarnings.h"             // For vtkTiledRayCastWarnings
 
 #include <algorithm> // For std::min
@@ -69,8 +70,22 @@ public:
 
   vtkOpenGLTiledRayCastVolumeMapper* Self;
 
-  // Drawing deferred out of VTK's volumetric peels to the renderer's EndEvent.
+  // VTK's dual depth peeling for volumes: the stage drawing this volume now; where the volume
+  // cannot take part (TakesPartInPeeling), its drawing is deferred to the renderer's EndEvent.
+  vtkTiledRayCastVolumetricPeel VolumetricPeel;
   vtkTiledRayCastDeferredDraw Deferred;
+  // Whether this frame's volume takes part in the peeling stage drawing it: the compute
+  // pipeline, compositing, a stage it knows.
+  bool TakesPartInPeeling() const
+  {
+    const int stage = this->VolumetricPeel.GetStage();
+    return this->UseCompute &&
+      this->Self->GetBlendMode() == vtkUnstructuredGridVolumeMapper::COMPOSITE_BLEND &&
+      stage >= vtkTiledRayCastVolumetricPeel::BeforePeels &&
+      stage <= vtkTiledRayCastVolumetricPeel::Remainder;
+  }
+  // The stage this frame draws for (0 when not taking part in depth peeling).
+  int PeelStage() const { return this->TakesPartInPeeling() ? this->VolumetricPeel.GetStage() : 0; }
 
   // Context: checked once per window.
   vtkTiledRayCastContext Context;

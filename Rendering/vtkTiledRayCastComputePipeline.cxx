@@ -21,6 +21,7 @@
 #include "vtkTiledRayCastDebugEvent.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastStatistics.h"
+#include "vtkTiledRayCastVolumetricPeel.h"
 #include "vtk_glew.h"
 
 #include "vtkTiledRayCastBoundaryFaceFS.h"
@@ -43,6 +44,7 @@ namespace
 // Image units and storage-buffer binding points, as declared in the GLSL.
 const unsigned int HeadsImageUnit = 0;
 const unsigned int ColorImageUnit = 1;
+const unsigned int BackColorImageUnit = 3; // taking part in VTK's dual depth peeling
 const unsigned int NodesBinding = 0;
 const unsigned int EntryCountBinding = 1;
 const unsigned int RayCountsBinding = 2;
@@ -70,8 +72,11 @@ enum RayCount
   NumberOfRayCounts
 };
 
-std::string Substituted(
-  std::string source, const vtkTiledRayCastComputePipeline::Replacements& replacements)
+} // anonymous namespace
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastComputePipeline::Substituted(
+  std::string source, const Replacements& replacements)
 {
   for (const auto& r : replacements)
   {
@@ -79,7 +84,6 @@ std::string Substituted(
   }
   return source;
 }
-} // anonymous namespace
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastComputePipeline::vtkTiledRayCastComputePipeline() = default;
@@ -232,6 +236,12 @@ bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
 bool vtkTiledRayCastComputePipeline::UpdatePrograms(
   vtkOpenGLRenderWindow* window, const Replacements& common, std::string& error)
 {
+  // The programs of VTK's depth peeling stages are built from the same pieces, when needed.
+  this->PeelCommon = common;
+  for (PeelPrograms& peel : this->Peel)
+  {
+    peel.Built = false;
+  }
   const Replacements replacements = ProgramReplacements(common, false);
   const std::string faceVS = Substituted(vtkTiledRayCastBoundaryFaceVS, replacements);
   if (!this->ReadyRaster(window, this->FacesProgram, faceVS,
@@ -297,6 +307,10 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   else
   {
     ok = ok && color->Allocate2D(width, height, 4, VTK_UNSIGNED_SHORT);
+  }
+  if (this->BackColor->GetHandle())
+  {
+    this->BackColor->Resize(width, height);
   }
   // One entry per pixel to start with; the list grows to what views need (ListEntries).
   ok = ok && this->GrowEntries(static_cast<vtkIdType>(width) * height, error);
@@ -547,14 +561,23 @@ void vtkTiledRayCastComputePipeline::Traverse(
 {
   vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
   counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
-  vtkTiledRayCastComputeShader* traversal =
-    frame.Members.empty() ? this->Traversal.Get() : this->Group.GetProgram();
+  vtkTiledRayCastComputeShader* traversal = frame.PeelStage > 0
+    ? this->Peel[frame.PeelStage - 1].Traversal.Get()
+    : frame.Members.empty() ? this->Traversal.Get()
+                            : this->Group.GetProgram();
   traversal->Use(frame.Window);
   if (frame.Members.empty())
   {
     setup.SetFrameUniforms(traversal);
     setup.SetMeshUniforms(traversal);
     setup.SetIntegrationUniforms(traversal);
+  }
+  if (frame.PeelStage > 0)
+  {
+    // The depth peeling pass's textures (vtkTiledRayCastVolumetricPeel), and the back colour.
+    frame.Peel->SetUniforms(traversal);
+    vtkTiledRayCastComputeShader::BindImage(
+      BackColorImageUnit, this->BackColor, GL_WRITE_ONLY, GL_RGBA16);
   }
   else
   {
@@ -572,6 +595,10 @@ void vtkTiledRayCastComputePipeline::Traverse(
     GL_SHADER_STORAGE_BARRIER_BIT);
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
+  if (frame.PeelStage > 0)
+  {
+    vtkTiledRayCastComputeShader::UnbindImage(BackColorImageUnit);
+  }
   // The entry count goes with the frame's counts (read with them, without waiting).
   this->EntryCount.CopyTo(
     counts, 0, CountEntriesAsked * sizeof(std::uint32_t), sizeof(std::uint32_t));
@@ -610,9 +637,18 @@ bool vtkTiledRayCastComputePipeline::FinishEntries(const Frame& frame,
 void vtkTiledRayCastComputePipeline::Composite(
   const Frame& frame, vtkTiledRayCastProgramSetup& setup)
 {
-  frame.Window->GetShaderCache()->ReadyShaderProgram(this->CompositeProgram.Shader);
-  vtkShaderProgram* p = this->CompositeProgram.Shader;
+  RasterProgram& program =
+    frame.PeelStage > 0 ? this->Peel[frame.PeelStage - 1].Composite : this->CompositeProgram;
+  frame.Window->GetShaderCache()->ReadyShaderProgram(program.Shader);
+  vtkShaderProgram* p = program.Shader;
   p->SetUniformi("in_color", this->Color->GetTextureUnit());
+  if (frame.PeelStage > 0)
+  {
+    // The peeling pass's textures, and the back colour (the caller activated the front one).
+    frame.Peel->SetUniforms(p);
+    this->BackColor->Activate();
+    p->SetUniformi("in_backColor", this->BackColor->GetTextureUnit());
+  }
   setup.SetSampleScaleUniforms(p);
   p->SetUniform2f("in_viewportOrigin", frame.ViewportOrigin);
   const float rectangle[4] = { -1.f, -1.f, 1.f, 1.f };
@@ -621,8 +657,12 @@ void vtkTiledRayCastComputePipeline::Composite(
   // Never culled: the entry pass culls by the volume's handedness, front faces (counter-clockwise,
   // like this rectangle) when its matrix mirrors.
   frame.Window->GetState()->vtkglDisable(GL_CULL_FACE);
-  this->CompositeProgram.VAO->Bind();
+  program.VAO->Bind();
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
+  if (frame.PeelStage > 0)
+  {
+    this->BackColor->Deactivate();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -661,8 +701,10 @@ void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastS
 //------------------------------------------------------------------------------
 vtkIdType vtkTiledRayCastComputePipeline::GetTargetBytes() const
 {
-  // List heads (4 B) and colour (8 B) per pixel of the targets, and the entry list.
-  return static_cast<vtkIdType>(this->TargetSize[0]) * this->TargetSize[1] * (4 + 8) +
+  // List heads (4 B) and colour (8 B) per pixel of the targets (and the back colour, 8 B, once
+  // the volume took part in depth peeling), and the entry list.
+  const int backColor = this->BackColor->GetHandle() ? 8 : 0;
+  return static_cast<vtkIdType>(this->TargetSize[0]) * this->TargetSize[1] * (4 + 8 + backColor) +
     this->EntryCapacity * this->EntryWords * 4;
 }
 
@@ -676,6 +718,15 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
     p->Key.clear();
   }
   this->Traversal->ReleaseProgram();
+  for (PeelPrograms& peel : this->Peel)
+  {
+    peel.Composite.Shader = nullptr;
+    peel.Composite.VAO->ReleaseGraphicsResources();
+    peel.Composite.Key.clear();
+    peel.Traversal->ReleaseProgram();
+    peel.Built = false;
+  }
+  this->BackColor->ReleaseGraphicsResources(window);
   for (int k = 0; k < vtkTiledRayCastGroupTraversal::MaximumMembers; ++k)
   {
     for (RasterProgram* p : { &this->GroupFaces[k], &this->GroupSlices[k] })

@@ -67,6 +67,7 @@ class vtkTextureObject;
 class vtkTiledRayCastComputeShader;
 class vtkTiledRayCastPhaseTimers;
 class vtkTiledRayCastStatistics;
+class vtkTiledRayCastVolumetricPeel;
 class vtkWindow;
 
 /**
@@ -108,6 +109,14 @@ public:
    */
   bool UpdateGroupPrograms(
     vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error);
+
+  /**
+   * Taking part in VTK's dual depth peeling (vtkTiledRayCastVolumetricPeel): the programs of
+   * `stage` (1 to 3), built from UpdatePrograms' pieces on first use, and the back colour the
+   * traversal then writes besides the colour, the size of the targets. False with a message
+   * when a program does not build or the GPU cannot allocate the colour.
+   */
+  bool PreparePeel(vtkOpenGLRenderWindow* window, int stage, std::string& error);
 
   /**
    * Per-pixel targets for an image of this size (they only grow). False with a message when
@@ -154,6 +163,11 @@ public:
     std::vector<Member> Members;
     int OpaqueDepthUnit = -1;
     float EarlyTerminationOpacity = 1.f;
+    // Taking part in VTK's dual depth peeling (PreparePeel): the stage (0: not peeling), and
+    // the pass, which binds its textures to the programs. One ray per pixel of the pass's
+    // textures, which the viewport (origin 0) covers.
+    int PeelStage = 0;
+    const vtkTiledRayCastVolumetricPeel* Peel = nullptr;
   };
 
   /**
@@ -255,6 +269,8 @@ private:
   void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
 
   static Replacements ProgramReplacements(const Replacements& common, bool group);
+  // `source` with the replacements made in order (every occurrence of each tag).
+  static std::string Substituted(std::string source, const Replacements& replacements);
   void ListMemberEntries(const Frame& frame, const Member& member, RasterProgram& faces,
     RasterProgram& slices, vtkTiledRayCastProgramSetup& setup, bool group, int index);
   void SetGroupUniforms(const Frame& frame);
@@ -267,6 +283,17 @@ private:
   RasterProgram GroupFaces[vtkTiledRayCastGroupTraversal::MaximumMembers];
   RasterProgram GroupSlices[vtkTiledRayCastGroupTraversal::MaximumMembers];
   vtkTiledRayCastGroupTraversal Group;
+  // VTK's dual depth peeling: the programs of its stages 1 to 3, built from PeelCommon (the
+  // pieces of the latest UpdatePrograms) when a stage first needs them, and the back colour.
+  struct PeelPrograms
+  {
+    RasterProgram Composite;
+    vtkNew<vtkTiledRayCastComputeShader> Traversal;
+    bool Built = false;
+  };
+  PeelPrograms Peel[3];
+  Replacements PeelCommon;
+  vtkNew<vtkTextureObject> BackColor;
   // Words per entry node: 3, or 4 in a group's list (the volume's index).
   vtkIdType EntryWords = 3;
 

@@ -11,12 +11,9 @@
 #include "vtkTiledRayCastDeferredDraw.h"
 
 #include "vtkCallbackCommand.h"
-#include "vtkDualDepthPeelingPass.h"
-#include "vtkInformation.h"
-#include "vtkInformationObjectBaseVectorKey.h"
 #include "vtkNew.h"
-#include "vtkOpenGLRenderPass.h"
 #include "vtkRenderer.h"
+#include "vtkTiledRayCastVolumetricPeel.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolume.h"
 
@@ -32,7 +29,7 @@ vtkTiledRayCastDeferredDraw::~vtkTiledRayCastDeferredDraw() = default;
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastDeferredDraw::Defer(vtkRenderer* renderer, vtkVolume* volume)
 {
-  if (this->Drawing || !vtkTiledRayCastDeferredDraw::InsideVolumetricPeeling(volume))
+  if (this->Drawing || !vtkTiledRayCastVolumetricPeel::FindPass(volume))
   {
     return false;
   }
@@ -75,23 +72,4 @@ void vtkTiledRayCastDeferredDraw::Stop()
   this->Renderer = nullptr;
   this->Volume = nullptr;
   this->Pending = false;
-}
-
-//------------------------------------------------------------------------------
-bool vtkTiledRayCastDeferredDraw::InsideVolumetricPeeling(vtkVolume* volume)
-{
-  vtkInformation* keys = volume->GetPropertyKeys();
-  vtkInformationObjectBaseVectorKey* passes = vtkOpenGLRenderPass::RenderPasses();
-  if (!keys || !keys->Has(passes))
-  {
-    return false;
-  }
-  for (int i = 0; i < passes->Length(keys); ++i)
-  {
-    if (vtkDualDepthPeelingPass::SafeDownCast(passes->Get(keys, i)))
-    {
-      return true;
-    }
-  }
-  return false;
 }

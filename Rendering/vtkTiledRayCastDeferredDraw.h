@@ -12,10 +12,10 @@
  * @class   vtkTiledRayCastDeferredDraw
  * @brief   draws a volume out of VTK's volumetric depth peels, once its renderer has finished
  *
- * VTK's dual depth peeling hands volumes depth ranges through shader replacements written for
- * its image ray caster, which the mapper cannot take part in: inside the peels (the volume
- * marked with a vtkDualDepthPeelingPass as a render pass) the mapper draws nothing and this
- * object renders the volume again on the renderer's EndEvent, over the composited scene.
+ * A volume that cannot take part in VTK's dual depth peeling (vtkTiledRayCastVolumetricPeel:
+ * the fragment pipeline, blend modes other than composite) draws nothing inside the peels (the
+ * volume marked with a vtkDualDepthPeelingPass as a render pass), and this object renders it
+ * again on the renderer's EndEvent, over the composited scene.
  *
  * Private to the module: not wrapped, not installed.
  */
@@ -52,9 +52,6 @@ private:
   vtkTiledRayCastDeferredDraw(const vtkTiledRayCastDeferredDraw&) = delete;
   void operator=(const vtkTiledRayCastDeferredDraw&) = delete;
 
-  // Whether VTK's dual depth peeling is peeling this volume (UseDepthPeelingForVolumes): it
-  // then marks the volume with itself as a render pass.
-  static bool InsideVolumetricPeeling(vtkVolume* volume);
   // The renderer's EndEvent.
   static void Draw(vtkObject* renderer, unsigned long, void* deferred, void*);
 

@@ -94,8 +94,10 @@ void vtkTiledRayCastWarnings::WarnTranslucentGeometry(vtkRenderer* ren, vtkVolum
 {
   vtkObject* self = this->Reporter;
   // Translucent polygons are drawn before volumes without depth (VTK's order), so the volume
-  // lands over them whatever their depth. Said once, whether or not depth peeling is on (with
-  // it, the volume's property keys carry the peeling pass's depth-mask override).
+  // lands over them whatever their depth. Said once. With depth peeling for volumes the compute
+  // pipeline takes part in the peeling and this is not called; the fragment pipeline's volume
+  // is drawn after the peeling (the volume's property keys then carry the peeling pass's
+  // depth-mask override).
   vtkInformation* keys = vol->GetPropertyKeys();
   bool translucentGeometry = keys && keys->Has(vtkOpenGLActor::GLDepthMaskOverride());
   vtkPropCollection* props = ren->GetViewProps();
@@ -113,7 +115,9 @@ void vtkTiledRayCastWarnings::WarnTranslucentGeometry(vtkRenderer* ren, vtkVolum
     vtkWarningWithObjectMacro(self,
       "Translucent polygonal geometry in the same renderer is not composited "
       "with the volume (it is drawn before it, as for VTK's projected tetrahedra "
-      "mapper, with depth peeling for volumes too). Make that geometry opaque, or "
+      "mapper). Turn on the renderer's depth peeling for volumes (SetUseDepthPeeling "
+      "and SetUseDepthPeelingForVolumes) to composite them in depth order (the compute "
+      "pipeline with composite blending takes part), make that geometry opaque, or "
       "render it in another renderer.");
     this->WarnedTranslucentGeometry = true;
   }

@@ -26,6 +26,44 @@ uniform ivec2 in_imageSize;
 
 layout(location = 0) out vec4 fragOutput0;
 
+#ifdef TRC_PEEL_STAGE
+// Taking part in VTK's dual depth peeling (vtkTiledRayCastVolumetricPeelRanges.glsl): the traversal's
+// front colour is in_color, its back colour in_backColor, one ray per pixel of the pass's own
+// textures. What goes where is what the pass's shader replacements make its image ray caster
+// write: at stage 1 the back colour to draw buffer 0 and the front to 1 (both start cleared,
+// blended with MAX); at stage 2 the back colour to 0 and the front under the front colour so
+// far (lastFrontColorTex) to 1, with MAX blending; at stage 3 the colour to 0, blended over.
+//TRC::VolumetricPeel::Dec
+uniform sampler2D in_backColor;
+#if TRC_PEEL_STAGE == 2
+uniform sampler2D lastFrontColorTex;
+#endif
+#if TRC_PEEL_STAGE != 3
+layout(location = 1) out vec4 fragOutput1;
+#endif
+
+void main()
+{
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  if (trcPeelPixelDone(pixel))
+  {
+    discard;
+  }
+  vec4 front = texelFetch(in_color, pixel, 0);
+#if TRC_PEEL_STAGE == 3
+  fragOutput0 = front;
+#else
+  fragOutput0 = texelFetch(in_backColor, pixel, 0);
+#if TRC_PEEL_STAGE == 1
+  fragOutput1 = front;
+#else
+  vec4 last = texelFetch(lastFrontColorTex, pixel, 0);
+  fragOutput1 = vec4(last.rgb + (1.0 - last.a) * front.rgb, 1.0 - (1.0 - last.a) * (1.0 - front.a));
+#endif
+#endif
+}
+#else
+
 // The colour of ray `pixel` (clamped to the image), transparent where it missed the mesh.
 vec4 trcRayColor(ivec2 pixel)
 {
@@ -61,3 +99,4 @@ void main()
   vec4 above = mix(trcRayColor(corner + ivec2(0, 1)), trcRayColor(corner + ivec2(1, 1)), f.x);
   fragOutput0 = mix(below, above, f.y);
 }
+#endif

@@ -28,6 +28,71 @@
 // The most steps one ray may take in one layer (more than any ray can need).
 uniform int in_maximumSteps;
 
+#ifdef TRC_PEEL_STAGE
+// Taking part in VTK's dual depth peeling: the ranges it asks for
+// (vtkTiledRayCastVolumetricPeelRanges.glsl); the front one goes to in_colorImage, the back one here.
+//TRC::VolumetricPeel::Dec
+layout(binding = 3, rgba16) uniform writeonly image2D in_backColorImage;
+#endif
+
+// The ray through every layer of its entry list (from node `head`), integrating what lies
+// between ray.lambdaMin and ray.lambdaMax into `color`; the status it ends with.
+int trcTraverse(uint head, TrcRay ray, inout vec4 color, inout int steps, inout uint layers,
+  inout bool startedNear)
+{
+  float exitLambda = 0.0;
+  float lastLambda = 0.0;
+  uint lastKey = 0u;
+  uint entered = 0u;
+  int status = TRC_WAITING;
+  while (status == TRC_WAITING)
+  {
+    float lambda;
+    uint key;
+    bool nearPlane;
+    if (trcNextEntry(head, entered == 0u, exitLambda, lastLambda, lastKey, lambda, key,
+          nearPlane) == 0u)
+    {
+      break;
+    }
+    if (entered > 0u)
+    {
+      lambda = max(lambda, exitLambda);
+    }
+#ifdef TRC_PEEL_STAGE
+    if (lambda >= ray.lambdaMax)
+    {
+      // Entries come in depth order: this one and the next are beyond the range's end. (Without
+      // peeling the entry pass lists none beyond the ray's end.)
+      status = TRC_DONE_DEPTH;
+      break;
+    }
+#endif
+    startedNear = startedNear || nearPlane;
+    ++entered;
+    lastLambda = lambda;
+    lastKey = nearPlane ? TRC_NEAR_PLANE_KEY : key;
+    uint tet = key >> 2u;
+    int entry = nearPlane ? TRC_NO_FACE : int(key & 3u);
+    int stalls = 0;
+    status = trcWalk(ray, in_maximumSteps, tet, lambda, entry, stalls, color, steps);
+    exitLambda = lambda;
+  }
+  layers = max(layers, entered);
+  return status;
+}
+
+#ifdef TRC_PEEL_STAGE
+// The ray cut to window depths range.x to range.y (within its clipping planes): empty when the
+// range is.
+bool trcCutRay(inout TrcRay ray, vec2 range, float fromLambda, float toLambda)
+{
+  ray.lambdaMin = max(fromLambda, trcLambdaFromWindowDepth(ray, range.x));
+  ray.lambdaMax = min(toLambda, trcLambdaFromWindowDepth(ray, range.y));
+  return range.x < range.y && ray.lambdaMin < ray.lambdaMax;
+}
+#endif
+
 void main()
 {
   trcClearGroupCounts();
@@ -37,40 +102,33 @@ void main()
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
   vec4 color = vec4(0.0);
+#ifdef TRC_PEEL_STAGE
+  vec4 backColor = vec4(0.0);
+  head = inImage && trcPeelPixelDone(pixel) ? 0u : head;
+#endif
   int steps = 0;
   uint layers = 0u;
   if (head != 0u)
   {
     TrcRay ray = trcPixelRay(vec2(pixel) + 0.5);
-    float exitLambda = 0.0;
-    float lastLambda = 0.0;
-    uint lastKey = 0u;
-    int status = TRC_WAITING;
     bool startedNear = false;
-    while (status == TRC_WAITING)
+#ifdef TRC_PEEL_STAGE
+    // The front range, then the back one, each walked from the ray's first entry.
+    vec4 ranges = trcPeelRanges(pixel);
+    const float fromLambda = ray.lambdaMin;
+    const float toLambda = ray.lambdaMax;
+    int status = TRC_DONE_DEPTH;
+    if (trcCutRay(ray, ranges.xy, fromLambda, toLambda))
     {
-      float lambda;
-      uint key;
-      bool nearPlane;
-      if (trcNextEntry(head, layers == 0u, exitLambda, lastLambda, lastKey, lambda, key,
-            nearPlane) == 0u)
-      {
-        break;
-      }
-      if (layers > 0u)
-      {
-        lambda = max(lambda, exitLambda);
-      }
-      startedNear = startedNear || nearPlane;
-      ++layers;
-      lastLambda = lambda;
-      lastKey = nearPlane ? TRC_NEAR_PLANE_KEY : key;
-      uint tet = key >> 2u;
-      int entry = nearPlane ? TRC_NO_FACE : int(key & 3u);
-      int stalls = 0;
-      status = trcWalk(ray, in_maximumSteps, tet, lambda, entry, stalls, color, steps);
-      exitLambda = lambda;
+      status = trcTraverse(head, ray, color, steps, layers, startedNear);
     }
+    if (status != TRC_DONE_OPAQUE && trcCutRay(ray, ranges.zw, fromLambda, toLambda))
+    {
+      status = trcTraverse(head, ray, backColor, steps, layers, startedNear);
+    }
+#else
+    int status = trcTraverse(head, ray, color, steps, layers, startedNear);
+#endif
     atomicAdd(trcGroupRays, 1u);
     atomicAdd(trcGroupSteps, uint(steps));
     atomicMax(trcGroupMaximumSteps, uint(steps));
@@ -95,6 +153,9 @@ void main()
   if (inImage)
   {
     imageStore(in_colorImage, pixel, color);
+#ifdef TRC_PEEL_STAGE
+    imageStore(in_backColorImage, pixel, backColor);
+#endif
   }
 
   barrier();

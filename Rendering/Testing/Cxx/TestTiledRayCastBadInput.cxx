@@ -256,14 +256,16 @@ bool ShadingWarnings(vtkUnstructuredGrid* spx)
   return ok;
 }
 
-// Depth peeling for volumes: VTK's dual depth peeling hands volumes depth ranges through
-// shader replacements written for its image ray caster, which this mapper cannot take part in
-// yet (it drew tile-patterned garbage). It draws the volume after the renderer has finished,
+// Depth peeling for volumes in the fragment pipeline: VTK's dual depth peeling hands volumes
+// depth ranges through shader replacements written for its image ray caster; the compute
+// pipeline takes part (TestTiledRayCastTranslucent), the fragment pipeline cannot (it drew
+// tile-patterned garbage in the peels). It draws the volume after the renderer has finished,
 // as without the switch: the same image as with peeling for volumes off, and one warning.
 bool VolumetricPeeling(vtkUnstructuredGrid* spx)
 {
   bool ok = true;
   trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
+  scene.Mapper->SetPipelineToFragment();
   vtkNew<MessageCounter> errors;
   scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
   vtkNew<vtkSphereSource> sphere;
@@ -303,8 +305,9 @@ bool VolumetricPeeling(vtkUnstructuredGrid* spx)
            " values differ)") &&
     ok;
   ok = Expect(scene.Mapper->GetStatistics()->GetRendered() &&
-           scene.Mapper->GetStatistics()->GetNumberOfRays() > 100,
-         "volumetric peeling: the volume drawn") &&
+           scene.Mapper->GetStatistics()->GetNumberOfRays() > 100 &&
+           scene.Mapper->GetStatistics()->GetDepthPeelingStage() == 0,
+         "volumetric peeling: the volume drawn, after the peeling") &&
     ok;
   return ok;
 }
@@ -414,8 +417,8 @@ bool NormalService(vtkUnstructuredGrid* spx)
   return ok;
 }
 
-// Translucent polygons in the renderer are not composited with the volume: one warning, on
-// the first frame only; an opaque actor brings none.
+// Translucent polygons in the renderer, without depth peeling for volumes, are not composited
+// with the volume: one warning, on the first frame only; an opaque actor brings none.
 bool TranslucentGeometry(vtkUnstructuredGrid* spx)
 {
   bool ok = true;
