@@ -9,12 +9,13 @@
 # "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
 # moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame); "empty"
 # band and spike transfer functions with and without empty-space skipping; "overlapping" 1, 2
-# and 4 overlapping copies of a mesh drawn in one traversal (BenchmarkOverlappingVolumes).
+# and 4 overlapping copies of a mesh drawn in one traversal (BenchmarkOverlappingVolumes);
+# "translucent" a mesh with translucent geometry, depth peeled (BenchmarkTranslucentGeometry).
 # On the GPU, 20 views a turn (18 degrees apart): an interactive rotation. At 10 (36 degrees) every
 # frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming, empty or overlapping}"
+kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming, empty, overlapping or translucent}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -114,6 +115,26 @@ case "$kind" in
         --frames "${TRC_OVERLAPPING_FRAMES:-20}" --counts 1,2,4 --shift "$shift" \
         --csv "$out/overlapping-$shift.csv" "${files[@]}"
     done
+    rm -f "$out/ladder/"*.vtu
+    suffix="GPU"
+    ;;
+  translucent)
+    # Translucent geometry in depth order (BenchmarkTranslucentGeometry): the volume alone, the
+    # translucent geometry alone, both without and with depth peeling for volumes, on bluntfin,
+    # post_tets6 and torus_1m at TRC_TRANSLUCENT_SIZE (1024; TRC_TRANSLUCENT_MESHES to choose).
+    files=()
+    for m in ${TRC_TRANSLUCENT_MESHES:-bluntfin post torus_1m}; do
+      case "$m" in
+        bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
+        post) files+=("$meshes/post_tets6_conforming.vtu") ;;
+        torus_1m)
+          "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m \
+            --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+          files+=("$out/ladder/torus_1m.vtu") ;;
+      esac
+    done
+    "$build/Benchmarks/BenchmarkTranslucentGeometry" --size "${TRC_TRANSLUCENT_SIZE:-1024}" \
+      --frames "${TRC_TRANSLUCENT_FRAMES:-20}" --csv "$out/translucent.csv" "${files[@]}"
     rm -f "$out/ladder/"*.vtu
     suffix="GPU"
     ;;
