@@ -19,6 +19,7 @@
 #include "TiledRayCastTestScene.h"
 #include "TiledRayCastTranslucentScene.h"
 
+#include "vtkPointData.h"
 #include "vtkProjectedTetrahedraMapper.h"
 #include "vtkTesting.h"
 
@@ -200,6 +201,31 @@ bool TestPeeling(vtkUnstructuredGrid* grid)
   return ok;
 }
 
+// An optically thick volume (unit distance 0.4 % of the diagonal: optical depth in the tens
+// across the torus), so that each range's early termination and the fragments in front of
+// and behind saturated stretches are exercised; and the volume's values far from zero (the
+// scalars shifted by 1e4, the transfer function with them).
+bool TestThick(vtkUnstructuredGrid* grid)
+{
+  vtkNew<vtkUnstructuredGrid> shifted;
+  shifted->DeepCopy(grid);
+  vtkDataArray* scalars = shifted->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    scalars->SetComponent(i, 0, scalars->GetComponent(i, 0) + 1e4);
+  }
+  Scene scene(shifted, trctest::MakePropertyFor(shifted, 0.004), 128);
+  scene.Renderer->GetActiveCamera()->Elevation(20);
+  scene.Renderer->GetActiveCamera()->Azimuth(30);
+  scene.Renderer->ResetCameraClippingRange();
+  trctest::Bounds bounds;
+  bounds.RMSE = 1.0;
+  bounds.P999 = 3.0;
+  bounds.Max = 4.0;
+  bool ok = scene.Check(bounds, "optically thick, scalars near 1e4");
+  return TookPart(scene, "optically thick") && ok;
+}
+
 // One peel where three are needed: the pass draws the volume a third time for what the peel
 // left (the remainder, alpha blended: VTK's approximation for its own fragments too, so the
 // image is only near the reference there).
@@ -260,6 +286,7 @@ int TestTiledRayCastTranslucent(int argc, char* argv[])
   }
   bool ok = TestPeeling(grid);
   ok = TestRemainder(grid) && ok;
+  ok = TestThick(grid) && ok;
   ok = TestWithoutPeelingForVolumes(grid) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
