@@ -55,7 +55,11 @@ struct Scene
     this->Window->SetAlphaBitPlanes(1);
     this->Window->SetSize(size, size);
     this->Window->AddRenderer(this->Renderer);
+    // The benchmarks' view (BenchmarkFrames.h): the whole scene, turned.
     this->Renderer->ResetCamera();
+    this->Renderer->GetActiveCamera()->Elevation(20);
+    this->Renderer->GetActiveCamera()->Azimuth(30);
+    this->Renderer->ResetCameraClippingRange();
   }
 
   vtkSmartPointer<vtkUnsignedCharArray> Pixels()
@@ -136,8 +140,6 @@ struct Scene
   }
 };
 
-// The scene from outside, then with the camera inside the volume and the sphere: within the
-// bounds, silently, the compute pipeline taking part in every stage of the peeling.
 // How many warnings of the mapper's own (not those of the mesh's validation) were given.
 int MapperWarnings(Scene& scene)
 {
@@ -170,19 +172,24 @@ bool TookPart(Scene& scene, const std::string& label)
   return ok;
 }
 
-bool TestPeeling(vtkUnstructuredGrid* grid)
+// VTK's dual depth peeling keeps its colours in 8-bit textures (RGBA8) between peels: each peel
+// rounds the front colour so far and the back one once more than a framebuffer does.
+trctest::Bounds PeelingBounds()
 {
-  // Optical depth well above 1 across the mesh, so that the order matters.
-  Scene scene(grid, trctest::MakePropertyFor(grid, 0.15), 128);
-  scene.Renderer->GetActiveCamera()->Elevation(20);
-  scene.Renderer->GetActiveCamera()->Azimuth(30);
-  scene.Renderer->ResetCameraClippingRange();
-  // VTK's dual depth peeling keeps its colours in 8-bit textures (RGBA8) between peels: each
-  // peel rounds the front colour so far and the back one once more than a framebuffer does.
   trctest::Bounds bounds;
   bounds.RMSE = 1.0;
   bounds.P999 = 3.0;
   bounds.Max = 4.0;
+  return bounds;
+}
+
+// The scene from outside, then with the camera inside the volume and the sphere: within the
+// bounds, silently, the compute pipeline taking part in every stage of the peeling.
+bool TestPeeling(vtkUnstructuredGrid* grid)
+{
+  // Optical depth well above 1 across the mesh, so that the order matters.
+  Scene scene(grid, trctest::MakePropertyFor(grid, 0.15), 128);
+  const trctest::Bounds bounds = PeelingBounds();
   bool ok = scene.Check(bounds, "outside");
   ok = TookPart(scene, "outside") && ok;
 
@@ -215,13 +222,7 @@ bool TestThick(vtkUnstructuredGrid* grid)
     scalars->SetComponent(i, 0, scalars->GetComponent(i, 0) + 1e4);
   }
   Scene scene(shifted, trctest::MakePropertyFor(shifted, 0.004), 128);
-  scene.Renderer->GetActiveCamera()->Elevation(20);
-  scene.Renderer->GetActiveCamera()->Azimuth(30);
-  scene.Renderer->ResetCameraClippingRange();
-  trctest::Bounds bounds;
-  bounds.RMSE = 1.0;
-  bounds.P999 = 3.0;
-  bounds.Max = 4.0;
+  const trctest::Bounds bounds = PeelingBounds();
   bool ok = scene.Check(bounds, "optically thick, scalars near 1e4");
   return TookPart(scene, "optically thick") && ok;
 }
@@ -232,9 +233,6 @@ bool TestThick(vtkUnstructuredGrid* grid)
 bool TestRemainder(vtkUnstructuredGrid* grid)
 {
   Scene scene(grid, trctest::MakePropertyFor(grid, 0.15), 128);
-  scene.Renderer->GetActiveCamera()->Elevation(20);
-  scene.Renderer->GetActiveCamera()->Azimuth(30);
-  scene.Renderer->ResetCameraClippingRange();
   scene.Renderer->SetMaximumNumberOfPeels(1);
   trctest::Bounds any;
   any.RMSE = any.P999 = any.Max = 255;
@@ -251,9 +249,6 @@ bool TestRemainder(vtkUnstructuredGrid* grid)
 bool TestWithoutPeelingForVolumes(vtkUnstructuredGrid* grid)
 {
   Scene scene(grid, trctest::MakePropertyFor(grid, 0.15), 128);
-  scene.Renderer->GetActiveCamera()->Elevation(20);
-  scene.Renderer->GetActiveCamera()->Azimuth(30);
-  scene.Renderer->ResetCameraClippingRange();
   scene.Renderer->SetUseDepthPeelingForVolumes(0);
   trctest::Bounds any;
   any.RMSE = any.P999 = any.Max = 255;
