@@ -35,50 +35,77 @@ uniform int in_maximumSteps;
 layout(binding = 3, rgba16) uniform writeonly image2D in_backColorImage;
 #endif
 
-// The ray through every layer of its entry list (from node `head`), integrating what lies
-// between ray.lambdaMin and ray.lambdaMax into `color`; the status it ends with.
-int trcTraverse(uint head, TrcRay ray, inout vec4 color, inout int steps, inout uint layers,
+// Where a ray's walk through the layers of its entry list (from node `head`) stands: inside tet
+// `tet` at `lambda`, entered through face `entry` (`inside`: stopped at the end of a range it
+// resumes from), or waiting for the next entry after the last one taken (`lastLambda`,
+// `lastKey`; the ray left the mesh at `exitLambda`).
+struct TrcLayerWalk
+{
+  uint head;
+  float exitLambda;
+  float lastLambda;
+  uint lastKey;
+  uint entered;
+  bool inside;
+  uint tet;
+  float lambda;
+  int entry;
+  int stalls;
+};
+
+TrcLayerWalk trcStartLayerWalk(uint head)
+{
+  return TrcLayerWalk(head, 0.0, 0.0, 0u, 0u, false, 0u, 0.0, TRC_NO_FACE, 0);
+}
+
+// The walk on through every layer, integrating what lies between ray.lambdaMin and
+// ray.lambdaMax into `color`; the status it ends with. Stopped at ray.lambdaMax inside a tet,
+// or before an entry beyond it, the walk resumes from there with the next range of the ray.
+int trcTraverse(inout TrcLayerWalk w, TrcRay ray, inout vec4 color, inout int steps,
   inout bool startedNear)
 {
-  float exitLambda = 0.0;
-  float lastLambda = 0.0;
-  uint lastKey = 0u;
-  uint entered = 0u;
   int status = TRC_WAITING;
+  if (w.inside)
+  {
+    status = trcWalk(ray, in_maximumSteps, w.tet, w.lambda, w.entry, w.stalls, color, steps);
+    w.exitLambda = w.lambda;
+  }
   while (status == TRC_WAITING)
   {
     float lambda;
     uint key;
     bool nearPlane;
-    if (trcNextEntry(head, entered == 0u, exitLambda, lastLambda, lastKey, lambda, key,
-          nearPlane) == 0u)
+    if (trcNextEntry(w.head, w.entered == 0u, w.exitLambda, w.lastLambda, w.lastKey, lambda,
+          key, nearPlane) == 0u)
     {
       break;
     }
-    if (entered > 0u)
+    if (w.entered > 0u)
     {
-      lambda = max(lambda, exitLambda);
+      lambda = max(lambda, w.exitLambda);
     }
 #ifdef TRC_PEEL_STAGE
     if (lambda >= ray.lambdaMax)
     {
-      // Entries come in depth order: this one and the next are beyond the range's end. (Without
-      // peeling the entry pass lists none beyond the ray's end.)
-      status = TRC_DONE_DEPTH;
-      break;
+      // Entries come in depth order: this one and the next are beyond the range's end, and
+      // this one is taken again by the next range. (Without peeling the entry pass lists none
+      // beyond the ray's end.)
+      w.inside = false;
+      return TRC_DONE_DEPTH;
     }
 #endif
     startedNear = startedNear || nearPlane;
-    ++entered;
-    lastLambda = lambda;
-    lastKey = nearPlane ? TRC_NEAR_PLANE_KEY : key;
-    uint tet = key >> 2u;
-    int entry = nearPlane ? TRC_NO_FACE : int(key & 3u);
-    int stalls = 0;
-    status = trcWalk(ray, in_maximumSteps, tet, lambda, entry, stalls, color, steps);
-    exitLambda = lambda;
+    ++w.entered;
+    w.lastLambda = lambda;
+    w.lastKey = nearPlane ? TRC_NEAR_PLANE_KEY : key;
+    w.tet = key >> 2u;
+    w.entry = nearPlane ? TRC_NO_FACE : int(key & 3u);
+    w.stalls = 0;
+    status = trcWalk(ray, in_maximumSteps, w.tet, lambda, w.entry, w.stalls, color, steps);
+    w.lambda = lambda;
+    w.exitLambda = lambda;
   }
-  layers = max(layers, entered);
+  w.inside = status == TRC_DONE_DEPTH;
   return status;
 }
 
@@ -112,23 +139,26 @@ void main()
   {
     TrcRay ray = trcPixelRay(vec2(pixel) + 0.5);
     bool startedNear = false;
+    TrcLayerWalk walk = trcStartLayerWalk(head);
 #ifdef TRC_PEEL_STAGE
-    // The front range, then the back one, each walked from the ray's first entry.
+    // The front range, then the back one behind it: the walk goes on from where the front
+    // range ended (the back one starts at or behind its end).
     vec4 ranges = trcPeelRanges(pixel);
     const float fromLambda = ray.lambdaMin;
     const float toLambda = ray.lambdaMax;
     int status = TRC_DONE_DEPTH;
     if (trcCutRay(ray, ranges.xy, fromLambda, toLambda))
     {
-      status = trcTraverse(head, ray, color, steps, layers, startedNear);
+      status = trcTraverse(walk, ray, color, steps, startedNear);
     }
-    if (status != TRC_DONE_OPAQUE && trcCutRay(ray, ranges.zw, fromLambda, toLambda))
+    if (status == TRC_DONE_DEPTH && trcCutRay(ray, ranges.zw, fromLambda, toLambda))
     {
-      status = trcTraverse(head, ray, backColor, steps, layers, startedNear);
+      status = trcTraverse(walk, ray, backColor, steps, startedNear);
     }
 #else
-    int status = trcTraverse(head, ray, color, steps, layers, startedNear);
+    int status = trcTraverse(walk, ray, color, steps, startedNear);
 #endif
+    layers = walk.entered;
     atomicAdd(trcGroupRays, 1u);
     atomicAdd(trcGroupSteps, uint(steps));
     atomicMax(trcGroupMaximumSteps, uint(steps));
