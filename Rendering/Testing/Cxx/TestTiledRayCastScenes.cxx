@@ -27,10 +27,8 @@
 #include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPointDataToCellData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkSphereSource.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkVolumeMapper.h"
@@ -324,12 +322,8 @@ bool LoadThick(Scene& s, int mode)
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(80.0, 0.0);
   opacity->AddPoint(120.0, 0.2);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(1.0);
   s.Volume->SetMapper(s.Mapper);
-  s.Volume->SetProperty(property);
+  s.Volume->SetProperty(trcscene::MakeVolumeProperty(color, opacity, 1.0));
   s.Renderer->AddVolume(s.Volume);
   s.Renderer->SetBackground(0, 0, 0);
   s.Window->SetMultiSamples(0);
@@ -532,15 +526,7 @@ void AddViewScenes(std::map<std::string, SceneSetup>& scenes)
           return false;
         double center[3];
         s.Grid->GetCenter(center);
-        vtkNew<vtkSphereSource> sphere;
-        sphere->SetCenter(center);
-        sphere->SetRadius(0.15 * s.Grid->GetLength());
-        sphere->SetThetaResolution(32);
-        sphere->SetPhiResolution(32);
-        vtkNew<vtkPolyDataMapper> sphereMapper;
-        sphereMapper->SetInputConnection(sphere->GetOutputPort());
-        vtkNew<vtkActor> actor;
-        actor->SetMapper(sphereMapper);
+        auto actor = trctest::MakeBall(center, 0.15 * s.Grid->GetLength(), 32);
         actor->GetProperty()->SetColor(0.9, 0.9, 0.9);
         s.Renderer->AddActor(actor);
         s.View(20, 30);

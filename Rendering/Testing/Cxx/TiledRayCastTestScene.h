@@ -18,6 +18,7 @@
 #include "TiledRayCastMessageCounter.h" // For trctest::MessageCounter
 #include "TiledRayCastSharedScenes.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
@@ -27,9 +28,11 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtkTestUtilities.h"
 #include "vtkTetReferenceRenderer.h"
 #include "vtkTiledRayCastStatistics.h"
@@ -68,10 +71,19 @@ struct WatchedVolume
   vtkNew<vtkVolume> Volume;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
+  vtkNew<MessageCounter> Errors; // counts the mapper's errors once CountErrors() is called
 
   WatchedVolume(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, int size)
+    : WatchedVolume(property, size)
   {
     this->Mapper->SetInputData(grid);
+    this->Renderer->ResetCamera();
+  }
+
+  // The same without an input: the caller connects the mapper (a composite input, a pipeline)
+  // and places the camera.
+  WatchedVolume(vtkVolumeProperty* property, int size)
+  {
     this->Mapper->AddObserver(vtkCommand::WarningEvent, this->Warnings);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(property);
@@ -79,9 +91,43 @@ struct WatchedVolume
     this->Window->SetMultiSamples(0);
     this->Window->SetSize(size, size);
     this->Window->AddRenderer(this->Renderer);
-    this->Renderer->ResetCamera();
+  }
+
+  // The mapper's errors are counted in Errors from now on, instead of failing the test.
+  MessageCounter* CountErrors()
+  {
+    this->Mapper->AddObserver(vtkCommand::ErrorEvent, this->Errors);
+    return this->Errors;
   }
 };
+
+// An opaque sphere (VTK's default material) of `radius` around `centre`, with `resolution`
+// steps in theta and phi (VTK's default, 8, where not given): geometry inside a volume.
+inline vtkSmartPointer<vtkActor> MakeBall(const double centre[3], double radius, int resolution = 8)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(centre[0], centre[1], centre[2]);
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  auto ball = vtkSmartPointer<vtkActor>::New();
+  ball->SetMapper(mapper);
+  return ball;
+}
+
+// Points `camera` at the origin from -y, z up, then turns it by `azimuth` and `elevation`
+// degrees: the views of the small synthetic blocks (reset the camera to fit them afterwards).
+inline void LookFrom(vtkCamera* camera, double azimuth, double elevation)
+{
+  camera->SetPosition(0, -1, 0);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 0, 1);
+  camera->Azimuth(azimuth);
+  camera->Elevation(elevation);
+  camera->OrthogonalizeViewUp();
+}
 
 // Whether this machine's OpenGL can run the mapper (tests skip, VTK_SKIP_RETURN_CODE, where not).
 inline bool RenderingSupported()
