@@ -72,7 +72,6 @@
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
 #include "vtkUnstructuredGridVolumeRayCastMapper.h"
 #include "vtkUnstructuredGridVolumeZSweepMapper.h"
 #include "vtkVolume.h"
@@ -248,55 +247,67 @@ struct Setting
   double Rate = 0; // the window's desired update rate while timed (0: VTK's still rate)
 };
 
-std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
+using M = vtkTiledRayCastVolumeMapper;
+
+// Our mapper of `grid` in the pipeline that `name` starts with ("compute ...": the compute
+// pipeline, any other the fragment pipeline), with these settings; `table` > 0 sets the tables'
+// scalar size (and half of it as their length size).
+Setting Ours(vtkUnstructuredGrid* grid, const std::string& name, int mode, int layout, int n,
+  int tile, int table, int queryInterval = 4, bool skipping = true)
+{
+  const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
+  return { "ours", name,
+    [=](double&)
+    {
+      auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
+      m->SetInputData(grid);
+      m->SetPipeline(pipeline);
+      m->SetIntegrationMode(mode);
+      m->SetMeshLayout(layout);
+      m->SetTetsPerPass(n);
+      m->SetTileSize(tile);
+      m->SetOcclusionQueryInterval(queryInterval);
+      m->SetEmptySpaceSkipping(skipping);
+      if (table > 0)
+      {
+        m->SetPreIntegrationTableScalarSize(table);
+        m->SetPreIntegrationTableLengthSize(table / 2);
+      }
+      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
+    } };
+}
+
+// --sweep defaults, the choice of defaults: tile size with one unlimited pass per layer, then
+// the paper's bounded passes (N tets each) with their occlusion queries every K passes.
+std::vector<Setting> DefaultsSweep(vtkUnstructuredGrid* grid)
 {
   std::vector<Setting> settings;
-  using M = vtkTiledRayCastVolumeMapper;
+  const int p = M::PARTIAL_PRE_INTEGRATION, c = M::COMPACT_LAYOUT;
+  for (int tile : { 64, 128, 256, 512, 0 })
+  {
+    settings.push_back(Ours(grid,
+      "fragment partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p, c, 0,
+      tile, 0));
+  }
+  for (int n : { 1, 4, 16, 64 })
+  {
+    settings.push_back(Ours(
+      grid, "fragment partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4));
+  }
+  settings.push_back(Ours(grid, "fragment partial compact N16 T256 K1", p, c, 16, 256, 0, 1));
+  settings.push_back(Ours(grid, "fragment partial compact N16 T256 K16", p, c, 16, 256, 0, 16));
+  return settings;
+}
+
+// Our settings of the other sweeps (quick, full, pipelines; only the first ones with
+// --ours-only): the mapper's defaults, the automatic integration mode (the cheapest within 1/255
+// of exact) and the compact layout, with partial pre-integration, exact, next to them.
+std::vector<Setting> OurSettings(vtkUnstructuredGrid* grid, const Options& o)
+{
+  std::vector<Setting> settings;
   auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
                 int queryInterval = 4, bool skipping = true)
-  {
-    // "compute ..." settings run the compute pipeline, the others the fragment pipeline.
-    const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
-    settings.push_back({ "ours", name,
-      [=](double&)
-      {
-        auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
-        m->SetInputData(grid);
-        m->SetPipeline(pipeline);
-        m->SetIntegrationMode(mode);
-        m->SetMeshLayout(layout);
-        m->SetTetsPerPass(n);
-        m->SetTileSize(tile);
-        m->SetOcclusionQueryInterval(queryInterval);
-        m->SetEmptySpaceSkipping(skipping);
-        if (table > 0)
-        {
-          m->SetPreIntegrationTableScalarSize(table);
-          m->SetPreIntegrationTableLengthSize(table / 2);
-        }
-        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-      } });
-  };
-  if (o.Sweep == "defaults")
-  {
-    // The choice of defaults: tile size with one unlimited pass per layer, then the paper's
-    // bounded passes (N tets each) with their occlusion queries every K passes.
-    const int p = M::PARTIAL_PRE_INTEGRATION, c = M::COMPACT_LAYOUT;
-    for (int tile : { 64, 128, 256, 512, 0 })
-    {
-      ours("fragment partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p,
-        c, 0, tile, 0);
-    }
-    for (int n : { 1, 4, 16, 64 })
-    {
-      ours("fragment partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4);
-    }
-    ours("fragment partial compact N16 T256 K1", p, c, 16, 256, 0, 1);
-    ours("fragment partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
-    return settings;
-  }
-  // The mapper's defaults: the automatic integration mode (the cheapest within 1/255 of exact),
-  // the compact layout; partial pre-integration, exact, next to them.
+  { settings.push_back(Ours(grid, name, mode, layout, n, tile, table, queryInterval, skipping)); };
   const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
   const int automatic = M::AUTOMATIC_INTEGRATION;
   ours("compute default", automatic, compact, 0, 256, 0);
@@ -336,11 +347,55 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     ours("compute table3d64 compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 64);
     ours("compute table2d64 compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 64);
   }
-  if (!o.Others)
-  {
-    return settings;
-  }
+  return settings;
+}
 
+// What ParaView users do instead: resample `grid` to a regular grid of r^3 points (points
+// outside the mesh are masked out) for VTK's GPU ray caster; `prepareMs` gets the resampling's
+// time.
+vtkSmartPointer<vtkAbstractVolumeMapper> ResampledGPUMapper(
+  vtkUnstructuredGrid* grid, int r, double& prepareMs)
+{
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkNew<vtkResampleToImage> resample;
+  resample->SetInputDataObject(grid);
+  resample->SetSamplingDimensions(r, r, r);
+  resample->UseInputBoundsOn();
+  resample->Update();
+  timer->StopTimer();
+  prepareMs = 1000.0 * timer->GetElapsedTime();
+  vtkImageData* image = resample->GetOutput();
+  auto volumeImage = vtkSmartPointer<vtkImageData>::New();
+  volumeImage->ShallowCopy(image);
+  auto mask = vtkSmartPointer<vtkImageData>::New();
+  mask->CopyStructure(image);
+  vtkDataArray* valid = image->GetPointData()->GetArray(resample->GetMaskArrayName());
+  vtkNew<vtkUnsignedCharArray> maskValues;
+  maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
+  {
+    maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
+  }
+  mask->GetPointData()->SetScalars(maskValues);
+  auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
+  m->SetInputData(volumeImage);
+  m->SetMaskInput(mask);
+  m->SetMaskTypeToBinary();
+  m->AutoAdjustSampleDistancesOff();
+  double spacing[3];
+  volumeImage->GetSpacing(spacing);
+  m->SetSampleDistance(0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
+  // The mask and image are kept alive by the mapper.
+  return m;
+}
+
+// VTK's mappers, as --no-others, --pt-only, --zsweep-max-tets and --resample say: the projected
+// tetrahedra, Bunyk's ray caster with partial pre-integration (TiledRayCastSharedScenes.h),
+// ZSweep up to 512 px, resampling for the GPU ray caster.
+void AddOtherMappers(
+  std::vector<Setting>& settings, vtkUnstructuredGrid* grid, const Options& o, int size)
+{
   settings.push_back({ "projected_tetrahedra", "default",
     [=](double&)
     {
@@ -350,19 +405,11 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
     } });
   if (o.ProjectedTetrahedraOnly)
   {
-    return settings;
+    return;
   }
   settings.push_back({ "bunyk_raycast", "partial preintegration",
     [=](double&)
-    {
-      auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
-      m->SetInputData(grid);
-      vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
-      m->SetRayIntegrator(integrator);
-      m->AutoAdjustSampleDistancesOff();
-      m->SetImageSampleDistance(1.0f);
-      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-    } });
+    { return vtkSmartPointer<vtkAbstractVolumeMapper>(trcscene::MakeBunykMapper(grid)); } });
   if (grid->GetNumberOfCells() <= o.ZSweepMaxTets && size <= 512)
   {
     settings.push_back({ "zsweep", "default",
@@ -378,46 +425,25 @@ std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, i
   for (int r : o.Resample)
   {
     settings.push_back({ "resample_gpu", "res" + std::to_string(r),
-      [=](double& prepareMs)
-      {
-        // What ParaView users do instead: resample to a regular grid (points
-        // outside the mesh are masked out) and use VTK's GPU ray caster.
-        vtkNew<vtkTimerLog> timer;
-        timer->StartTimer();
-        vtkNew<vtkResampleToImage> resample;
-        resample->SetInputDataObject(grid);
-        resample->SetSamplingDimensions(r, r, r);
-        resample->UseInputBoundsOn();
-        resample->Update();
-        timer->StopTimer();
-        prepareMs = 1000.0 * timer->GetElapsedTime();
-        vtkImageData* image = resample->GetOutput();
-        auto volumeImage = vtkSmartPointer<vtkImageData>::New();
-        volumeImage->ShallowCopy(image);
-        auto mask = vtkSmartPointer<vtkImageData>::New();
-        mask->CopyStructure(image);
-        vtkDataArray* valid = image->GetPointData()->GetArray(resample->GetMaskArrayName());
-        vtkNew<vtkUnsignedCharArray> maskValues;
-        maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
-        for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
-        {
-          maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
-        }
-        mask->GetPointData()->SetScalars(maskValues);
-        auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
-        m->SetInputData(volumeImage);
-        m->SetMaskInput(mask);
-        m->SetMaskTypeToBinary();
-        m->AutoAdjustSampleDistancesOff();
-        double spacing[3];
-        volumeImage->GetSpacing(spacing);
-        m->SetSampleDistance(0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
-        // The mask and image are kept alive by the mapper.
-        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-      } });
+      [=](double& prepareMs) { return ResampledGPUMapper(grid, r, prepareMs); } });
+  }
+}
+
+// Every setting timed on `grid` at `size` pixels, in the order of the CSV rows.
+std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
+{
+  if (o.Sweep == "defaults")
+  {
+    return DefaultsSweep(grid);
+  }
+  std::vector<Setting> settings = OurSettings(grid, o);
+  if (!o.OursOnly && o.Others)
+  {
+    AddOtherMappers(settings, grid, o, size);
   }
   return settings;
 }
+
 // The options of the header (Options' defaults where not given); false with a message on a bad
 // one or no mesh.
 bool ParseOptions(int argc, char* argv[], Options& o)
