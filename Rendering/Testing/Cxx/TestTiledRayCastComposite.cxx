@@ -33,7 +33,6 @@
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
-#include "vtkPointDataToCellData.h"
 #include "vtkPoints.h"
 #include "vtkTetMeshValidationReport.h"
 
@@ -226,11 +225,7 @@ int TestTiledRayCastComposite(int, char*[])
   vtkNew<vtkMultiBlockDataSet> cellTree;
   for (int b = 0; b < 2; ++b)
   {
-    vtkNew<vtkPointDataToCellData> toCells;
-    toCells->SetInputData(blocks[b]);
-    toCells->Update();
-    cellBlocks[b] = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    cellBlocks[b]->ShallowCopy(toCells->GetOutput());
+    cellBlocks[b] = trctest::WithCellScalars(blocks[b]);
     cellTree->SetBlock(b, cellBlocks[b]);
   }
   ok = Check("cell scalars", Appended(cellBlocks), InputByName(cellTree, true), 2, 0, true) && ok;

@@ -22,7 +22,6 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointDataToCellData.h"
 #include "vtkTesting.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTimerLog.h"
@@ -182,11 +181,7 @@ bool TestBand(vtkUnstructuredGrid* grid)
 
 bool TestCellScalars(vtkUnstructuredGrid* grid)
 {
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(grid);
-  toCells->Update();
-  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-  cells->GetPointData()->Initialize();
+  vtkSmartPointer<vtkUnstructuredGrid> cells = trctest::WithCellScalars(grid, false);
   double range[2];
   cells->GetCellData()->GetScalars()->GetRange(range);
   trctest::WatchedVolume scene(

@@ -19,7 +19,6 @@
 
 #include "vtkCellData.h"
 #include "vtkMatrix4x4.h"
-#include "vtkPointDataToCellData.h"
 #include "vtkTesting.h"
 
 #include <array>
@@ -398,11 +397,7 @@ bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
   double range[2];
   fin->GetPointData()->GetScalars()->GetRange(range);
   scene.Add(fin, trcscene::MakeBandProperty(range, 0.5, 0.1, fin->GetLength() / 20));
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(spx);
-  toCells->Update();
-  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-  cells->GetPointData()->Initialize();
+  vtkSmartPointer<vtkUnstructuredGrid> cells = trctest::WithCellScalars(spx, false);
   // The cells keep spx's points: placed as spx.
   scene.AddPlaced(cells, OtherProperty(spx, 0.1), fin, 0.9, { 0.0, 0.05, 0.0 }, { 0, 30, 0 });
   scene.Renderer->ResetCamera();

@@ -26,7 +26,6 @@
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
-#include "vtkPointDataToCellData.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkTetMeshValidationReport.h"
@@ -107,10 +106,7 @@ void UseTableBounds(Scene& s)
 // The scene's point scalars averaged to cell scalars, which the mapper renders.
 void UseCellScalars(Scene& s)
 {
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(s.Grid);
-  toCells->Update();
-  s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  s.Grid = trctest::WithCellScalars(s.Grid);
   s.Mapper->SetInputData(s.Grid);
   s.Mapper->SetScalarModeToUseCellData();
 }

@@ -9,9 +9,10 @@
 
 =========================================================================*/
 // Helpers shared by the mapper's image tests: reading the test meshes, a transfer function (the
-// ramp of TiledRayCastSharedScenes.h, which the benchmarks use too), and
-// the check of a rendered image against the exact reference renderer (every baseline image of
-// the project is also checked this way, with the bounds stated by each test).
+// ramp of TiledRayCastSharedScenes.h, which the benchmarks use too), a mapper alone in a window
+// (WatchedVolume), an opaque ball, cell scalars, the views of the small blocks, and the check of
+// a rendered image against the exact reference renderer (every baseline image of the project is
+// also checked this way, with the bounds stated by each test).
 #ifndef TiledRayCastTestScene_h
 #define TiledRayCastTestScene_h
 
@@ -28,6 +29,7 @@
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPointDataToCellData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -115,6 +117,23 @@ inline vtkSmartPointer<vtkActor> MakeBall(const double centre[3], double radius,
   auto ball = vtkSmartPointer<vtkActor>::New();
   ball->SetMapper(mapper);
   return ball;
+}
+
+// `grid` with its point data averaged to cell data (vtkPointDataToCellData); without
+// `keepPointData` the points lose their arrays: cell scalars only.
+inline vtkSmartPointer<vtkUnstructuredGrid> WithCellScalars(
+  vtkDataSet* grid, bool keepPointData = true)
+{
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(grid);
+  toCells->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> cells =
+    vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  if (!keepPointData)
+  {
+    cells->GetPointData()->Initialize();
+  }
+  return cells;
 }
 
 // Points `camera` at the origin from -y, z up, then turns it by `azimuth` and `elevation`
