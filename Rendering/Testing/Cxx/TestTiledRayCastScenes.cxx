@@ -17,10 +17,7 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkLightKit.h"
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 #include "vtkPiecewiseFunction.h"
@@ -294,21 +291,8 @@ SceneSetup TorusTable(int mode, double fraction)
 
 bool LoadThick(Scene& s, int mode)
 {
-  vtkNew<vtkImageData> box;
-  box->SetDimensions(2, 2, 2);
-  box->SetSpacing(4.0, 4.0, 24.0);
-  box->SetOrigin(-2.0, -2.0, -12.0);
-  vtkNew<vtkFloatArray> scalars;
-  scalars->SetName("scalar");
-  for (vtkIdType i = 0; i < 8; ++i)
-  {
-    scalars->InsertNextValue(static_cast<float>(80.0 + 40.0 * (box->GetPoint(i)[2] + 12.0) / 24.0));
-  }
-  box->GetPointData()->SetScalars(scalars);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(box);
-  tets->Update();
-  s.Grid = tets->GetOutput();
+  s.Grid = trctest::TetrahedralBox({ 4.0, 4.0, 24.0 }, { -2.0, -2.0, -12.0 },
+    [](const double* x) { return 80.0 + 40.0 * (x[2] + 12.0) / 24.0; });
   s.Mapper->SetInputData(s.Grid);
   s.Mapper->SynchronousStatisticsOn();
   s.Mapper->SetIntegrationMode(mode);

@@ -24,6 +24,7 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetTriangleFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -46,6 +47,7 @@
 #include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -117,6 +119,28 @@ inline vtkSmartPointer<vtkActor> MakeBall(const double centre[3], double radius,
   auto ball = vtkSmartPointer<vtkActor>::New();
   ball->SetMapper(mapper);
   return ball;
+}
+
+// The box of one voxel of `spacing` at `origin`, split into tetrahedra (vtkDataSetTriangleFilter),
+// with point scalars "scalar" = value(point) as float.
+inline vtkSmartPointer<vtkUnstructuredGrid> TetrahedralBox(const std::array<double, 3>& spacing,
+  const std::array<double, 3>& origin, const std::function<double(const double*)>& value)
+{
+  vtkNew<vtkImageData> box;
+  box->SetDimensions(2, 2, 2);
+  box->SetSpacing(spacing.data());
+  box->SetOrigin(origin.data());
+  vtkNew<vtkFloatArray> scalars;
+  scalars->SetName("scalar");
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    scalars->InsertNextValue(static_cast<float>(value(box->GetPoint(i))));
+  }
+  box->GetPointData()->SetScalars(scalars);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(box);
+  tets->Update();
+  return tets->GetOutput();
 }
 
 // `grid` with its point data averaged to cell data (vtkPointDataToCellData); without
