@@ -33,6 +33,12 @@ ladder() {
 drop_ladder() {
   rm -f "$out/ladder/"*.vtu
 }
+# torus_1m of the ladder at 2048², our two pipelines at their defaults and the other mappers
+# named ("--pt-only": the projected tetrahedra; "--no-others": none), no reference.
+torus_1m_at_2048() {
+  "$bench" --sweep pipelines "$@" --no-reference --size 2048 --frames 20 \
+    --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+}
 
 case "$kind" in
   cpu)
@@ -52,8 +58,7 @@ case "$kind" in
     ladder torus_1m
     "$bench" --size 1024 --frames 20 --csv "$out/results.csv" "$meshes/box5_tets.vtu" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --pt-only --no-reference --size 2048 --frames 20 \
-      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+    torus_1m_at_2048 --pt-only
     drop_ladder
     suffix="GPU"
     ;;
@@ -64,8 +69,7 @@ case "$kind" in
     "$bench" --sweep pipelines --no-others --size 1024 --frames 20 --csv "$out/results.csv" \
       "$meshes/box5_tets.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 20 \
-      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+    torus_1m_at_2048 --no-others
     drop_ladder
     suffix="GPU"
     ;;
