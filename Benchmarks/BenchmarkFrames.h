@@ -9,7 +9,7 @@
 
 =========================================================================*/
 // What the frame-timing benchmarks of one mapper (BenchmarkDeformingMesh,
-// BenchmarkOverlappingVolumes) share, so that their figures come from the same scene and clock:
+// BenchmarkOverlappingVolumes; BenchmarkMappers takes its median) share, so that their figures come from the same scene and clock:
 // the options every one takes, reading a mesh, the window and camera, the timed first frame and
 // the median of the frames.
 #ifndef BenchmarkFrames_h
@@ -34,12 +34,12 @@
 
 namespace trcbench
 {
-// The median, 0 for none.
-inline double Median(std::vector<double> values)
+// The median, `none` (0 where not given) for none.
+inline double Median(std::vector<double> values, double none = 0.0)
 {
   if (values.empty())
   {
-    return 0.0;
+    return none;
   }
   std::sort(values.begin(), values.end());
   const size_t n = values.size();

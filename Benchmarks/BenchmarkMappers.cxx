@@ -49,22 +49,18 @@
 // then hold the previous frame's GPU times and counts, which the medians do not mind. Settings of
 // ours are named by pipeline; each pipeline's default setting is "compute default" and "fragment
 // default".
+#include "BenchmarkFrames.h"
+#include "BenchmarkMapperSettings.h"
 #include "BenchmarkMeshOrder.h"
 #include "TiledRayCastSharedScenes.h"
 #include "vtkCamera.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
-#include "vtkFloatArray.h"
-#include "vtkGPUVolumeRayCastMapper.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderTimer.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
-#include "vtkProjectedTetrahedraMapper.h"
 #include "vtkRenderer.h"
-#include "vtkResampleToImage.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetReferenceRenderer.h"
 #include "vtkTiledRayCastStatistics.h"
@@ -72,9 +68,6 @@
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
-#include "vtkUnstructuredGridPartialPreIntegration.h"
-#include "vtkUnstructuredGridVolumeRayCastMapper.h"
-#include "vtkUnstructuredGridVolumeZSweepMapper.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 #include "vtkXMLUnstructuredGridReader.h"
@@ -93,24 +86,8 @@
 
 namespace
 {
-struct Options
-{
-  std::vector<int> Sizes;
-  int Frames = 12;
-  std::string Csv;
-  bool OursOnly = false;
-  bool Others = true;
-  bool ProjectedTetrahedraOnly = false;
-  std::string Sweep = "quick"; // quick, full or defaults
-  vtkIdType ZSweepMaxTets = 300000;
-  std::vector<int> Resample = { 64, 128, 256 };
-  bool Reference = true;
-  std::string Order = "input";
-  std::string TransferFunction = "ramp";
-  double Rate = 0;
-  bool Shade = false;
-  std::vector<std::string> Meshes;
-};
+using trcmappers::Options;
+using trcmappers::Setting;
 
 // One CSV row; NaN = not measured (written as an empty cell).
 struct Row
@@ -160,15 +137,10 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << "\n";
 }
 
-double Median(std::vector<double> v)
+// The median of the timed frames' values; NaN (an empty cell) for none.
+double Median(const std::vector<double>& values)
 {
-  if (v.empty())
-  {
-    return NAN;
-  }
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return trcbench::Median(values, NAN);
 }
 
 // The transfer function of every benchmark: the ramp of the tests' scenes over the scalar range,
@@ -239,185 +211,6 @@ Error Compare(const std::vector<unsigned char>& a, const std::vector<unsigned ch
   return { std::sqrt(sum / d.size()), p999, mx, lost };
 }
 
-// A setting: a name, a mapper family, and how to make its mapper (and, for resampling, the
-// time it took).
-struct Setting
-{
-  std::string Mapper, Name;
-  std::function<vtkSmartPointer<vtkAbstractVolumeMapper>(double& prepareMs)> Make;
-  double Rate = 0; // the window's desired update rate while timed (0: VTK's still rate)
-};
-
-std::vector<Setting> MakeSettings(vtkUnstructuredGrid* grid, const Options& o, int size)
-{
-  std::vector<Setting> settings;
-  using M = vtkTiledRayCastVolumeMapper;
-  auto ours = [&](const std::string& name, int mode, int layout, int n, int tile, int table,
-                int queryInterval = 4, bool skipping = true)
-  {
-    // "compute ..." settings run the compute pipeline, the others the fragment pipeline.
-    const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
-    settings.push_back({ "ours", name,
-      [=](double&)
-      {
-        auto m = vtkSmartPointer<vtkTiledRayCastVolumeMapper>::New();
-        m->SetInputData(grid);
-        m->SetPipeline(pipeline);
-        m->SetIntegrationMode(mode);
-        m->SetMeshLayout(layout);
-        m->SetTetsPerPass(n);
-        m->SetTileSize(tile);
-        m->SetOcclusionQueryInterval(queryInterval);
-        m->SetEmptySpaceSkipping(skipping);
-        if (table > 0)
-        {
-          m->SetPreIntegrationTableScalarSize(table);
-          m->SetPreIntegrationTableLengthSize(table / 2);
-        }
-        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-      } });
-  };
-  if (o.Sweep == "defaults")
-  {
-    // The choice of defaults: tile size with one unlimited pass per layer, then the paper's
-    // bounded passes (N tets each) with their occlusion queries every K passes.
-    const int p = M::PARTIAL_PRE_INTEGRATION, c = M::COMPACT_LAYOUT;
-    for (int tile : { 64, 128, 256, 512, 0 })
-    {
-      ours("fragment partial compact N0 T" + (tile ? std::to_string(tile) : std::string("all")), p,
-        c, 0, tile, 0);
-    }
-    for (int n : { 1, 4, 16, 64 })
-    {
-      ours("fragment partial compact N" + std::to_string(n) + " T256 K4", p, c, n, 256, 0, 4);
-    }
-    ours("fragment partial compact N16 T256 K1", p, c, 16, 256, 0, 1);
-    ours("fragment partial compact N16 T256 K16", p, c, 16, 256, 0, 16);
-    return settings;
-  }
-  // The mapper's defaults: the automatic integration mode (the cheapest within 1/255 of exact),
-  // the compact layout; partial pre-integration, exact, next to them.
-  const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
-  const int automatic = M::AUTOMATIC_INTEGRATION;
-  ours("compute default", automatic, compact, 0, 256, 0);
-  if (o.TransferFunction != "ramp")
-  {
-    ours("compute no-skipping", automatic, compact, 0, 256, 0, 4, false);
-  }
-  if (o.Rate > 0)
-  {
-    std::ostringstream name;
-    name << "compute interactive " << o.Rate << "/s";
-    ours(name.str(), automatic, compact, 0, 256, 0);
-    settings.back().Rate = o.Rate;
-  }
-  ours("compute partial compact", partial, compact, 0, 256, 0);
-  if (o.OursOnly)
-  {
-    return settings;
-  }
-  ours("fragment default", automatic, compact, 0, 256, 0);
-  if (o.Sweep != "pipelines")
-  {
-    ours("compute partial paper", partial, M::PAPER_LAYOUT, 0, 256, 0);
-    ours("compute table3d compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
-    ours("compute table2d compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
-    ours("fragment partial compact N16 T256", partial, compact, 16, 256, 0);
-    ours("fragment partial paper N0 T256", partial, M::PAPER_LAYOUT, 0, 256, 0);
-  }
-  if (o.Sweep == "full")
-  {
-    ours("fragment partial compact N0 T64", partial, compact, 0, 64, 0);
-    ours("fragment partial compact N0 T128", partial, compact, 0, 128, 0);
-    ours("fragment table3d compact N0 T256", M::PRE_INTEGRATION_3D, compact, 0, 256, 0);
-    ours("fragment table2d compact N0 T256", M::PRE_INTEGRATION_2D, compact, 0, 256, 0);
-    ours("fragment partial compact N4 T256", partial, compact, 4, 256, 0);
-    ours("fragment partial compact N64 T256", partial, compact, 64, 256, 0);
-    ours("compute table3d64 compact", M::PRE_INTEGRATION_3D, compact, 0, 256, 64);
-    ours("compute table2d64 compact", M::PRE_INTEGRATION_2D, compact, 0, 256, 64);
-  }
-  if (!o.Others)
-  {
-    return settings;
-  }
-
-  settings.push_back({ "projected_tetrahedra", "default",
-    [=](double&)
-    {
-      auto m = vtkSmartPointer<vtkProjectedTetrahedraMapper>::New();
-      m->SetInputData(grid);
-      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-    } });
-  if (o.ProjectedTetrahedraOnly)
-  {
-    return settings;
-  }
-  settings.push_back({ "bunyk_raycast", "partial preintegration",
-    [=](double&)
-    {
-      auto m = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
-      m->SetInputData(grid);
-      vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
-      m->SetRayIntegrator(integrator);
-      m->AutoAdjustSampleDistancesOff();
-      m->SetImageSampleDistance(1.0f);
-      return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-    } });
-  if (grid->GetNumberOfCells() <= o.ZSweepMaxTets && size <= 512)
-  {
-    settings.push_back({ "zsweep", "default",
-      [=](double&)
-      {
-        auto m = vtkSmartPointer<vtkUnstructuredGridVolumeZSweepMapper>::New();
-        m->SetInputData(grid);
-        m->AutoAdjustSampleDistancesOff();
-        m->SetImageSampleDistance(1.0f);
-        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-      } });
-  }
-  for (int r : o.Resample)
-  {
-    settings.push_back({ "resample_gpu", "res" + std::to_string(r),
-      [=](double& prepareMs)
-      {
-        // What ParaView users do instead: resample to a regular grid (points
-        // outside the mesh are masked out) and use VTK's GPU ray caster.
-        vtkNew<vtkTimerLog> timer;
-        timer->StartTimer();
-        vtkNew<vtkResampleToImage> resample;
-        resample->SetInputDataObject(grid);
-        resample->SetSamplingDimensions(r, r, r);
-        resample->UseInputBoundsOn();
-        resample->Update();
-        timer->StopTimer();
-        prepareMs = 1000.0 * timer->GetElapsedTime();
-        vtkImageData* image = resample->GetOutput();
-        auto volumeImage = vtkSmartPointer<vtkImageData>::New();
-        volumeImage->ShallowCopy(image);
-        auto mask = vtkSmartPointer<vtkImageData>::New();
-        mask->CopyStructure(image);
-        vtkDataArray* valid = image->GetPointData()->GetArray(resample->GetMaskArrayName());
-        vtkNew<vtkUnsignedCharArray> maskValues;
-        maskValues->SetNumberOfTuples(valid->GetNumberOfTuples());
-        for (vtkIdType i = 0; i < valid->GetNumberOfTuples(); ++i)
-        {
-          maskValues->SetValue(i, valid->GetTuple1(i) != 0 ? 255 : 0);
-        }
-        mask->GetPointData()->SetScalars(maskValues);
-        auto m = vtkSmartPointer<vtkGPUVolumeRayCastMapper>::New();
-        m->SetInputData(volumeImage);
-        m->SetMaskInput(mask);
-        m->SetMaskTypeToBinary();
-        m->AutoAdjustSampleDistancesOff();
-        double spacing[3];
-        volumeImage->GetSpacing(spacing);
-        m->SetSampleDistance(0.5 * std::min({ spacing[0], spacing[1], spacing[2] }));
-        // The mask and image are kept alive by the mapper.
-        return vtkSmartPointer<vtkAbstractVolumeMapper>(m);
-      } });
-  }
-  return settings;
-}
 // The options of the header (Options' defaults where not given); false with a message on a bad
 // one or no mesh.
 bool ParseOptions(int argc, char* argv[], Options& o)

@@ -25,6 +25,36 @@ bench="$build/Benchmarks/BenchmarkMappers"
 meshes="$here/Testing/Data/Meshes"
 unset DISPLAY
 
+# The dataset ladder's rungs named (ladder torus_1m wavelet_30m ...) into $out/ladder, its log in
+# $out/ladder.log; drop_ladder removes the meshes again.
+ladder() {
+  "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' "$@") \
+    --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+}
+drop_ladder() {
+  rm -f "$out/ladder/"*.vtu
+}
+# The paths of the named GPU meshes (bluntfin, post: post_tets6, torus_1m: the ladder's rung,
+# made here) in the array `files`.
+gpu_meshes() {
+  files=()
+  for m in "$@"; do
+    case "$m" in
+      bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
+      post) files+=("$meshes/post_tets6_conforming.vtu") ;;
+      torus_1m)
+        ladder torus_1m
+        files+=("$out/ladder/torus_1m.vtu") ;;
+    esac
+  done
+}
+# torus_1m of the ladder at 2048², our two pipelines at their defaults and the other mappers
+# named ("--pt-only": the projected tetrahedra; "--no-others": none), no reference.
+torus_1m_at_2048() {
+  "$bench" --sweep pipelines "$@" --no-reference --size 2048 --frames 20 \
+    --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
+}
+
 case "$kind" in
   cpu)
     # llvmpipe on 2 cores, 512²: our two pipelines and the projected tetrahedra side by side on
@@ -32,42 +62,40 @@ case "$kind" in
     # docs/benchmarks.md).
     "$bench" --sweep pipelines --pt-only --size 512 --frames 6 --csv "$out/results.csv" \
       "$meshes/spx_vistrails.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu"
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder torus_1m
     "$bench" --sweep pipelines --pt-only --size 512 --frames 4 --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="llvmpipe (CPU)"
     ;;
   gpu)
     # Every mapper at 1024² (the floor scene, three meshes); torus_1m at 2048² with our two
     # pipelines and the projected tetrahedra.
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder torus_1m
     "$bench" --size 1024 --frames 20 --csv "$out/results.csv" "$meshes/box5_tets.vtu" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --pt-only --no-reference --size 2048 --frames 20 \
-      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
-    rm -f "$out/ladder/"*.vtu
+    torus_1m_at_2048 --pt-only
+    drop_ladder
     suffix="GPU"
     ;;
   pipelines)
     # Our two pipelines only, each at its default, on the GPU meshes at 1024² and torus_1m at
     # 2048²: the quick check of the compute pipeline's speed, phase by phase.
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder torus_1m
     "$bench" --sweep pipelines --no-others --size 1024 --frames 20 --csv "$out/results.csv" \
       "$meshes/box5_tets.vtu" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
-    "$bench" --sweep pipelines --no-others --no-reference --size 2048 --frames 20 \
-      --csv "$out/results.csv" "$out/ladder/torus_1m.vtu"
-    rm -f "$out/ladder/"*.vtu
+    torus_1m_at_2048 --no-others
+    drop_ladder
     suffix="GPU"
     ;;
   deforming)
     # Every point moving every frame (BenchmarkDeformingMesh): rebuild, upload and render per
     # frame, on the GPU meshes and torus_1m at 1024² (here on llvmpipe: TRC_DEFORMING_SIZE=512).
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder torus_1m
     "$build/Benchmarks/BenchmarkDeformingMesh" --size "${TRC_DEFORMING_SIZE:-1024}" --frames 20 \
       --csv "$out/deforming.csv" "$meshes/bluntfin_tets.vtu" \
       "$meshes/post_tets6_conforming.vtu" "$out/ladder/torus_1m.vtu"
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="GPU"
     ;;
   empty)
@@ -76,8 +104,7 @@ case "$kind" in
     # without the reference: its exact image takes too long), at TRC_EMPTY_SIZE (1024; 512 here).
     size="${TRC_EMPTY_SIZE:-1024}"
     rungs="torus_1m ${TRC_EMPTY_LARGE:-wavelet_30m}"
-    "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' $rungs) \
-      --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder $rungs
     for tf in band spike; do
       "$bench" --ours-only --no-others --tf $tf --size "$size" --frames "${TRC_EMPTY_FRAMES:-20}" \
         --csv "$out/empty.csv" "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
@@ -90,24 +117,14 @@ case "$kind" in
         esac
       done
     done
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="GPU"
     ;;
   overlapping)
     # Overlapping volumes (BenchmarkOverlappingVolumes): 1, 2 and 4 copies of bluntfin, post_tets6
     # and torus_1m, integrated in one traversal, at
     # TRC_OVERLAPPING_SIZE (1024; here on llvmpipe 256 and TRC_OVERLAPPING_MESHES=bluntfin).
-    files=()
-    for m in ${TRC_OVERLAPPING_MESHES:-bluntfin post torus_1m}; do
-      case "$m" in
-        bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
-        post) files+=("$meshes/post_tets6_conforming.vtu") ;;
-        torus_1m)
-          "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m \
-            --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-          files+=("$out/ladder/torus_1m.vtu") ;;
-      esac
-    done
+    gpu_meshes ${TRC_OVERLAPPING_MESHES:-bluntfin post torus_1m}
     # Shifted by 3 % of the diagonal per copy (nearly every ray through a mixture), then by 30 %
     # (the copies overlap in part: most rays cross one copy at a time).
     for shift in ${TRC_OVERLAPPING_SHIFTS:-0.03 0.3}; do
@@ -115,44 +132,33 @@ case "$kind" in
         --frames "${TRC_OVERLAPPING_FRAMES:-20}" --counts 1,2,4 --shift "$shift" \
         --csv "$out/overlapping-$shift.csv" "${files[@]}"
     done
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="GPU"
     ;;
   translucent)
     # Translucent geometry in depth order (BenchmarkTranslucentGeometry): the volume alone, the
     # translucent geometry alone, both without and with depth peeling for volumes, on bluntfin,
     # post_tets6 and torus_1m at TRC_TRANSLUCENT_SIZE (1024; TRC_TRANSLUCENT_MESHES to choose).
-    files=()
-    for m in ${TRC_TRANSLUCENT_MESHES:-bluntfin post torus_1m}; do
-      case "$m" in
-        bluntfin) files+=("$meshes/bluntfin_tets.vtu") ;;
-        post) files+=("$meshes/post_tets6_conforming.vtu") ;;
-        torus_1m)
-          "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m \
-            --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
-          files+=("$out/ladder/torus_1m.vtu") ;;
-      esac
-    done
+    gpu_meshes ${TRC_TRANSLUCENT_MESHES:-bluntfin post torus_1m}
     "$build/Benchmarks/BenchmarkTranslucentGeometry" --size "${TRC_TRANSLUCENT_SIZE:-1024}" \
       --frames "${TRC_TRANSLUCENT_FRAMES:-20}" --csv "$out/translucent.csv" "${files[@]}"
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="GPU"
     ;;
   defaults)
     # The study behind the mapper's defaults: tile size, tets per pass, occlusion-query interval
     # (ours only), on the GPU meshes and the comb, whose rays re-enter up to six times.
-    "$build/Benchmarks/MakeDatasetLadder" --rung torus_1m --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder torus_1m
     "$bench" --sweep defaults --size "${TRC_DEFAULTS_SIZE:-1024}" --frames 20 --csv "$out/defaults.csv" \
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
-    rm -f "$out/ladder/"*.vtu
+    drop_ladder
     suffix="GPU"
     ;;
   ladder)
     # torus_10m and torus_30m take minutes to mesh (docs/datasets.md): not in this run.
     rungs="${TRC_LADDER_RUNGS:-wavelet_300k wavelet_1m wavelet_3m wavelet_10m wavelet_30m torus_300k torus_1m torus_3m}"
-    "$build/Benchmarks/MakeDatasetLadder" $(printf -- '--rung %s ' $rungs) \
-      --inputs "$here/Testing/Data/TetGenInputs" "$out/ladder" > "$out/ladder.log" 2>&1
+    ladder $rungs
     # Our two pipelines on every rung; the projected tetrahedra up to 3M tets (its CPU sort
     # takes seconds a frame beyond).
     for f in "$out"/ladder/*.vtu; do

@@ -8,7 +8,10 @@
   See LICENSE for details.
 
 =========================================================================*/
+// vtkTetReferenceRenderer's public image helpers are defined here too, with the compositing
+// along a ray: the compositing of the renderer's output over a background is this file's concern.
 #include "vtkTetReferenceCompositing.h"
+#include "vtkTetReferenceRenderer.h"
 
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
@@ -117,7 +120,7 @@ void CompositeInto(const char* caller, vtkImageData* rgba, const double backgrou
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceCompositing::CompositeOverBackground(
+void vtkTetReferenceRenderer::CompositeOverBackground(
   vtkImageData* rgba, const double background[3], vtkImageData* output)
 {
   CompositeInto<vtkFloatArray>("CompositeOverBackground", rgba, background, output,
@@ -125,7 +128,7 @@ void vtkTetReferenceCompositing::CompositeOverBackground(
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceCompositing::ConvertToUnsignedChar(
+void vtkTetReferenceRenderer::ConvertToUnsignedChar(
   vtkImageData* rgba, const double background[3], vtkImageData* output)
 {
   CompositeInto<vtkUnsignedCharArray>("ConvertToUnsignedChar", rgba, background, output,
@@ -134,7 +137,7 @@ void vtkTetReferenceCompositing::ConvertToUnsignedChar(
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceCompositing::EmulateRayCastImageDisplay(
+void vtkTetReferenceRenderer::EmulateRayCastImageDisplay(
   vtkImageData* rgba, const double background[3], vtkImageData* output)
 {
   vtkDataArray* in = RGBAScalars("EmulateRayCastImageDisplay", rgba, output);
@@ -198,7 +201,7 @@ void vtkTetReferenceCompositing::EmulateRayCastImageDisplay(
 }
 
 //------------------------------------------------------------------------------
-int vtkTetReferenceCompositing::CompareImages(vtkImageData* a, vtkImageData* b, double stats[3])
+int vtkTetReferenceRenderer::CompareImages(vtkImageData* a, vtkImageData* b, double stats[3])
 {
   stats[0] = stats[1] = stats[2] = 0.0;
   vtkDataArray* da = a ? a->GetPointData()->GetScalars() : nullptr;

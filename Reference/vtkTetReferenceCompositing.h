@@ -13,8 +13,8 @@
  * @brief   private: vtkTetReferenceRenderer's compositing, along a ray and over a background
  *
  * CompositeRay integrates the tetrahedra a ray crosses front to back (each segment exactly,
- * vtkTetRayIntegrator) into premultiplied RGBA. The image functions are the implementations
- * of vtkTetReferenceRenderer's public static helpers (compositing the RGBA image over a
+ * vtkTetRayIntegrator) into premultiplied RGBA. vtkTetReferenceCompositing.cxx also defines
+ * vtkTetReferenceRenderer's public static image helpers (compositing the RGBA image over a
  * background, the 8-bit conversion, the emulation of vtkUnstructuredGridVolumeRayCastMapper's
  * display, the image comparison): see vtkTetReferenceRenderer.h for what each does.
  */
@@ -26,7 +26,6 @@
 
 #include <vector> // For std::vector
 
-class vtkImageData;
 class vtkTetRayIntegrator;
 class vtkTetReferenceShading;
 
@@ -44,19 +43,6 @@ public:
     const std::vector<unsigned char>& transparent, vtkTetRayIntegrator* integrator,
     double unitLength, double rgba[4], const vtkTetReferenceShading* shading = nullptr,
     const double d[3] = nullptr);
-
-  ///@{
-  /**
-   * vtkTetReferenceRenderer's image helpers (same names, same arguments).
-   */
-  static void CompositeOverBackground(
-    vtkImageData* rgba, const double background[3], vtkImageData* output);
-  static void ConvertToUnsignedChar(
-    vtkImageData* rgba, const double background[3], vtkImageData* output);
-  static void EmulateRayCastImageDisplay(
-    vtkImageData* rgba, const double background[3], vtkImageData* output);
-  static int CompareImages(vtkImageData* a, vtkImageData* b, double stats[3]);
-  ///@}
 };
 
 #endif

@@ -617,33 +617,6 @@ int vtkTetReferenceRenderer::GetNumberOfTranslucentLayers()
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::CompositeOverBackground(
-  vtkImageData* rgba, const double background[3], vtkImageData* output)
-{
-  vtkTetReferenceCompositing::CompositeOverBackground(rgba, background, output);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::ConvertToUnsignedChar(
-  vtkImageData* rgba, const double background[3], vtkImageData* output)
-{
-  vtkTetReferenceCompositing::ConvertToUnsignedChar(rgba, background, output);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::EmulateRayCastImageDisplay(
-  vtkImageData* rgba, const double background[3], vtkImageData* output)
-{
-  vtkTetReferenceCompositing::EmulateRayCastImageDisplay(rgba, background, output);
-}
-
-//------------------------------------------------------------------------------
-int vtkTetReferenceRenderer::CompareImages(vtkImageData* a, vtkImageData* b, double stats[3])
-{
-  return vtkTetReferenceCompositing::CompareImages(a, b, stats);
-}
-
-//------------------------------------------------------------------------------
 void vtkTetReferenceRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

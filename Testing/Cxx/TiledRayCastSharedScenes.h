@@ -32,6 +32,18 @@
 
 namespace trcscene
 {
+// A property of these transfer functions (the first component's) and unit distance: what every
+// scene's transfer function ends in.
+inline vtkSmartPointer<vtkVolumeProperty> MakeVolumeProperty(
+  vtkColorTransferFunction* color, vtkPiecewiseFunction* opacity, double unitDistance)
+{
+  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
+  property->SetColor(color);
+  property->SetScalarOpacity(opacity);
+  property->SetScalarOpacityUnitDistance(unitDistance);
+  return property;
+}
+
 // The ramp of the mapper's scenes: a transfer function over [lo, hi] with a few nodes, varied
 // colour and a moderate opacity; the unit distance is a fraction of the mesh's size so that rays
 // neither vanish nor saturate.
@@ -54,11 +66,7 @@ inline vtkSmartPointer<vtkVolumeProperty> MakeProperty(
     opacity->AddPoint(lo + 0.82 * (hi - lo), 0.3);
   }
   opacity->AddPoint(hi, 0.6);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(unitDistance);
-  return property;
+  return MakeVolumeProperty(color, opacity, unitDistance);
 }
 
 // The ramp over a grid's active point scalars ([0, 1] without), with a unit distance of a
@@ -94,11 +102,7 @@ inline vtkSmartPointer<vtkVolumeProperty> MakeBandProperty(
   opacity->AddPoint(0.5 * (a + b), 1.0);
   opacity->AddPoint(b, 0.0);
   opacity->AddPoint(range[1], 0.0);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(unitDistance);
-  return property;
+  return MakeVolumeProperty(color, opacity, unitDistance);
 }
 
 // The length of the diagonal of `bounds` (xmin, xmax, ymin, ...).
@@ -125,25 +129,27 @@ inline vtkSmartPointer<vtkVolumeProperty> MakeBunykProperty(
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(range[0], 0.05, midpoint, sharpness);
   opacity->AddPoint(range[1], 0.9);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(diagonal / 15.0);
-  return property;
+  return MakeVolumeProperty(color, opacity, diagonal / 15.0);
 }
 
 // `grid` in VTK's vtkUnstructuredGridVolumeRayCastMapper with partial pre-integration (the
 // reference's optical model), one ray per pixel.
-inline vtkSmartPointer<vtkVolume> MakeBunykVolume(vtkDataSet* grid, vtkVolumeProperty* property)
+inline vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper> MakeBunykMapper(vtkDataSet* grid)
 {
-  vtkNew<vtkUnstructuredGridVolumeRayCastMapper> mapper;
+  auto mapper = vtkSmartPointer<vtkUnstructuredGridVolumeRayCastMapper>::New();
   mapper->SetInputData(grid);
   vtkNew<vtkUnstructuredGridPartialPreIntegration> integrator;
   mapper->SetRayIntegrator(integrator);
   mapper->SetImageSampleDistance(1.0f);
   mapper->AutoAdjustSampleDistancesOff();
+  return mapper;
+}
+
+// MakeBunykMapper's mapper of `grid` in a volume of `property`.
+inline vtkSmartPointer<vtkVolume> MakeBunykVolume(vtkDataSet* grid, vtkVolumeProperty* property)
+{
   auto volume = vtkSmartPointer<vtkVolume>::New();
-  volume->SetMapper(mapper);
+  volume->SetMapper(MakeBunykMapper(grid));
   volume->SetProperty(property);
   return volume;
 }

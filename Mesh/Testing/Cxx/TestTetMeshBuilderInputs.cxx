@@ -17,6 +17,7 @@
 // test driver fails on printed errors) and checked.
 #include "TetMeshTestUtilities.h"
 #include "TiledRayCastMessageCounter.h"
+#include "TiledRayCastTestGrids.h"
 
 #include "vtkCellData.h"
 #include "vtkCommand.h"
@@ -41,6 +42,10 @@
 
 namespace
 {
+using trctest::AddCell;
+using trctest::AddLinearScalars;
+using trctest::MakeArray;
+using trctest::MakeTetGrid;
 using trctest::MessageCounter;
 
 struct Builder
@@ -73,11 +78,6 @@ bool Refused(vtkTetMesh* mesh, const char* what)
 vtkIdType AddPoint(vtkPoints* points, double x, double y, double z)
 {
   return points->InsertNextPoint(x, y, z);
-}
-
-void AddCell(vtkUnstructuredGrid* grid, int type, const std::vector<vtkIdType>& ids)
-{
-  grid->InsertNextCell(type, static_cast<vtkIdType>(ids.size()), ids.data());
 }
 
 // A 4 x 3 x 2 lattice of unit cubes' corners (id = i + 4 j + 12 k) plus the centre of cube
@@ -140,53 +140,6 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeMixedGrid()
   AddCell(grid, VTK_VOXEL, corners(1, 1, { 0, 1, 3, 2, 4, 5, 7, 6 }));
   // Cube (2, 1): a hexahedron.
   AddCell(grid, VTK_HEXAHEDRON, corners(2, 1, { 0, 1, 2, 3, 4, 5, 6, 7 }));
-  return grid;
-}
-
-// An array of the values value(0) ... value(n - 1).
-template <typename ArrayT, typename Function>
-vtkSmartPointer<ArrayT> MakeArray(const char* name, vtkIdType n, Function value)
-{
-  auto array = vtkSmartPointer<ArrayT>::New();
-  array->SetName(name);
-  array->SetNumberOfTuples(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    array->SetValue(i, static_cast<typename ArrayT::ValueType>(value(i)));
-  }
-  return array;
-}
-
-// Point scalars s = x + 2y + 3z (reproduced exactly by any linear split).
-void AddLinearScalars(vtkDataSet* data, const char* name = "s")
-{
-  data->GetPointData()->SetScalars(MakeArray<vtkDoubleArray>(name, data->GetNumberOfPoints(),
-    [data](vtkIdType i)
-    {
-      double x[3];
-      data->GetPoint(i, x);
-      return x[0] + 2 * x[1] + 3 * x[2];
-    }));
-}
-
-// A grid of these points and tetrahedra, with linear scalars: the small meshes below.
-vtkSmartPointer<vtkUnstructuredGrid> MakeTetGrid(
-  std::initializer_list<std::array<double, 3>> points,
-  std::initializer_list<std::initializer_list<vtkIdType>> tets)
-{
-  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
-  vtkNew<vtkPoints> gridPoints;
-  for (const std::array<double, 3>& p : points)
-  {
-    gridPoints->InsertNextPoint(p.data());
-  }
-  grid->SetPoints(gridPoints);
-  grid->Allocate(static_cast<vtkIdType>(tets.size()));
-  for (const auto& tet : tets)
-  {
-    AddCell(grid, VTK_TETRA, tet);
-  }
-  AddLinearScalars(grid);
   return grid;
 }
 

@@ -32,7 +32,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkSphereSource.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -185,8 +184,7 @@ bool SevenClippingPlanes(vtkUnstructuredGrid* spx)
 {
   bool ok = true;
   trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
-  vtkNew<MessageCounter> errors;
-  scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  MessageCounter* errors = scene.CountErrors();
   double b[6];
   spx->GetBounds(b);
   for (int k = 0; k < 7; ++k)
@@ -266,17 +264,10 @@ bool VolumetricPeeling(vtkUnstructuredGrid* spx)
   bool ok = true;
   trctest::WatchedVolume scene(spx, trctest::MakePropertyFor(spx, 0.1), 64);
   scene.Mapper->SetPipelineToFragment();
-  vtkNew<MessageCounter> errors;
-  scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-  vtkNew<vtkSphereSource> sphere;
+  MessageCounter* errors = scene.CountErrors();
   double centre[3];
   spx->GetCenter(centre);
-  sphere->SetCenter(centre);
-  sphere->SetRadius(0.3 * spx->GetLength());
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> translucent;
-  translucent->SetMapper(sphereMapper);
+  auto translucent = trctest::MakeBall(centre, 0.3 * spx->GetLength());
   translucent->GetProperty()->SetOpacity(0.4);
   scene.Renderer->AddActor(translucent);
   scene.Renderer->SetUseDepthPeeling(1);

@@ -63,11 +63,7 @@ vtkSmartPointer<vtkVolumeProperty> CoordinatesProperty()
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(0.0, 0.0);
   opacity->AddPoint(31.0, 1.0);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(4.0);
-  return property;
+  return trcscene::MakeVolumeProperty(color, opacity, 4.0);
 }
 
 struct CoordinatesScene
@@ -75,7 +71,6 @@ struct CoordinatesScene
   vtkSmartPointer<vtkUnstructuredGrid> Grid = CoordinatesGrid();
   vtkSmartPointer<vtkVolumeProperty> Property = CoordinatesProperty();
   trctest::WatchedVolume View{ Grid, Property, 96 };
-  vtkNew<MessageCounter> Errors;
 
   CoordinatesScene()
   {
@@ -83,7 +78,7 @@ struct CoordinatesScene
     mapper->SetScalarModeToUsePointFieldData();
     mapper->SetArrayAccessMode(VTK_GET_ARRAY_BY_NAME);
     mapper->SelectScalarArray("coords");
-    mapper->AddObserver(vtkCommand::ErrorEvent, this->Errors);
+    this->View.CountErrors();
     vtkCamera* camera = this->View.Renderer->GetActiveCamera();
     camera->Azimuth(30);
     camera->Elevation(20);
@@ -96,7 +91,8 @@ struct CoordinatesScene
   bool Matches(const std::string& label, bool magnitude, int component)
   {
     this->View.Window->Render();
-    bool ok = Expect(this->Errors->Count == 0, label + ": no error (" + this->Errors->Text + ")");
+    bool ok =
+      Expect(this->View.Errors->Count == 0, label + ": no error (" + this->View.Errors->Text + ")");
     ok = trctest::CheckAgainstReference(this->View.Window, this->View.Renderer, this->View.Volume,
            trctest::Bounds(), label.c_str(),
            [&](vtkTetReferenceRenderer* reference)
@@ -121,15 +117,15 @@ bool Refused(const std::string& label, vtkUnstructuredGrid* grid, vtkVolumePrope
   const char* message, const std::function<void(vtkTiledRayCastVolumeMapper*)>& configure = nullptr)
 {
   trctest::WatchedVolume view(grid, property, 48);
-  vtkNew<MessageCounter> errors;
-  view.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  MessageCounter* errors = view.CountErrors();
   if (configure)
   {
     configure(view.Mapper);
   }
   view.Window->Render();
   view.Window->Render();
-  bool ok = Expect(errors->Count == 1, label + ": one error (got " + std::to_string(errors->Count) + ")");
+  bool ok =
+    Expect(errors->Count == 1, label + ": one error (got " + std::to_string(errors->Count) + ")");
   ok = Expect(errors->Text.find(message) != std::string::npos,
          label + ": the error says '" + message + "' (got: " + errors->Text + ")") &&
     ok;

@@ -18,6 +18,7 @@
 // (vtkAppendFilter, points not merged). A block of image data is refused with an error and
 // nothing drawn. Before: every composite input was refused by the pipeline (vtkUnstructuredGridBase
 // required).
+#include "TiledRayCastTestGrids.h"
 #include "TiledRayCastTestScene.h"
 
 #include "vtkAppendFilter.h"
@@ -32,7 +33,6 @@
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkPointData.h"
-#include "vtkPointDataToCellData.h"
 #include "vtkPoints.h"
 #include "vtkTetMeshValidationReport.h"
 
@@ -91,15 +91,8 @@ void TwoBlocks(double jump, vtkSmartPointer<vtkUnstructuredGrid> blocks[2])
       other->FillValue(7.0);
       blocks[b]->GetPointData()->AddArray(other);
     }
-    vtkNew<vtkDoubleArray> s;
-    s->SetName("s");
-    for (vtkIdType i = 0; i < blocks[b]->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      blocks[b]->GetPoint(i, p);
-      s->InsertNextValue(p[0] + 2 * p[1] + 3 * p[2] + (b == 1 ? jump : 0.0));
-    }
-    blocks[b]->GetPointData()->AddArray(s);
+    blocks[b]->GetPointData()->AddArray(
+      trctest::LinearScalars(blocks[b], "s", b == 1 ? jump : 0.0));
   }
 }
 
@@ -122,40 +115,24 @@ bool Check(const std::string& label, vtkUnstructuredGrid* reference,
   const std::function<void(vtkTiledRayCastVolumeMapper*)>& connect, vtkIdType blocks,
   vtkIdType empty, bool shared)
 {
-  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-  connect(mapper);
-  vtkNew<MessageCounter> errors;
-  mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(trctest::MakeProperty(0, 24, 2.0));
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
-  vtkNew<vtkRenderWindow> window;
-  window->SetMultiSamples(0);
-  window->SetSize(90, 90);
-  window->AddRenderer(renderer);
+  trctest::WatchedVolume view(trctest::MakeProperty(0, 24, 2.0), 90);
+  connect(view.Mapper);
+  MessageCounter* errors = view.CountErrors();
   bool ok = true;
   const double views[2][2] = { { 30, 20 }, { 100, -35 } };
   for (int v = 0; v < 2; ++v)
   {
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetPosition(0, -1, 0);
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetViewUp(0, 0, 1);
-    camera->Azimuth(views[v][0]);
-    camera->Elevation(views[v][1]);
-    camera->OrthogonalizeViewUp();
-    renderer->ResetCamera(); // from the mapper's bounds: the composite input's
-    window->Render();
+    trctest::LookFrom(view.Renderer->GetActiveCamera(), views[v][0], views[v][1]);
+    view.Renderer->ResetCamera(); // from the mapper's bounds: the composite input's
+    view.Window->Render();
     const std::string name = label + ", view " + std::to_string(v);
     ok = Expect(errors->Count == 0, name + ": no error (" + errors->Text + ")") && ok;
-    ok = Expect(mapper->GetStatistics()->GetRendered(), name + ": rendered") && ok;
-    ok = trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), name.c_str(),
-           [reference](vtkTetReferenceRenderer* r) { r->SetInputData(reference); }) &&
+    ok = Expect(view.Mapper->GetStatistics()->GetRendered(), name + ": rendered") && ok;
+    ok = trctest::CheckAgainstReference(view.Window, view.Renderer, view.Volume, trctest::Bounds(),
+           name.c_str(), [reference](vtkTetReferenceRenderer* r) { r->SetInputData(reference); }) &&
       ok;
   }
-  vtkTetMeshValidationReport* report = mapper->GetValidationReport();
+  vtkTetMeshValidationReport* report = view.Mapper->GetValidationReport();
   std::cout << label << ": " << report->GetSummary() << "\n";
   ok = Expect(report->GetNumberOfBlocks() == blocks && report->GetNumberOfEmptyBlocks() == empty,
          label + ": blocks counted") &&
@@ -248,11 +225,7 @@ int TestTiledRayCastComposite(int, char*[])
   vtkNew<vtkMultiBlockDataSet> cellTree;
   for (int b = 0; b < 2; ++b)
   {
-    vtkNew<vtkPointDataToCellData> toCells;
-    toCells->SetInputData(blocks[b]);
-    toCells->Update();
-    cellBlocks[b] = vtkSmartPointer<vtkUnstructuredGrid>::New();
-    cellBlocks[b]->ShallowCopy(toCells->GetOutput());
+    cellBlocks[b] = trctest::WithCellScalars(blocks[b]);
     cellTree->SetBlock(b, cellBlocks[b]);
   }
   ok = Check("cell scalars", Appended(cellBlocks), InputByName(cellTree, true), 2, 0, true) && ok;
@@ -264,27 +237,18 @@ int TestTiledRayCastComposite(int, char*[])
     vtkNew<vtkMultiBlockDataSet> mixed;
     mixed->SetBlock(0, blocks[0]);
     mixed->SetBlock(1, image);
-    vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-    mapper->SetInputData(mixed);
-    ByName(mapper, "s");
-    vtkNew<MessageCounter> errors;
-    mapper->AddObserver(vtkCommand::ErrorEvent, errors);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(trctest::MakeProperty(0, 24, 2.0));
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddVolume(volume);
-    vtkNew<vtkRenderWindow> window;
-    window->SetSize(40, 40);
-    window->AddRenderer(renderer);
-    renderer->ResetCamera();
-    window->Render();
-    window->Render();
+    trctest::WatchedVolume view(trctest::MakeProperty(0, 24, 2.0), 40);
+    view.Mapper->SetInputData(mixed);
+    ByName(view.Mapper, "s");
+    MessageCounter* errors = view.CountErrors();
+    view.Renderer->ResetCamera();
+    view.Window->Render();
+    view.Window->Render();
     ok = Expect(errors->Count == 1, "image block: one error (got " + errors->Text + ")") && ok;
     ok = Expect(errors->Text.find("block 1 is a vtkImageData") != std::string::npos,
            "image block: the error names it") &&
       ok;
-    ok = Expect(!mapper->GetStatistics()->GetRendered(), "image block: nothing drawn") && ok;
+    ok = Expect(!view.Mapper->GetStatistics()->GetRendered(), "image block: nothing drawn") && ok;
     std::cout << "image block: " << errors->Text << "\n";
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -41,11 +41,7 @@ vtkSmartPointer<vtkVolumeProperty> MakeDiscretizedProperty(double lo, double hi,
   opacity->AddPoint(lo, 0.0);
   opacity->AddPoint(lo + 0.3001 * (hi - lo), 0.1);
   opacity->AddPoint(hi, 0.8);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(unit);
-  return property;
+  return trcscene::MakeVolumeProperty(color, opacity, unit);
 }
 
 // The node list against VTK's own evaluation of the map, away from the steps' edges.

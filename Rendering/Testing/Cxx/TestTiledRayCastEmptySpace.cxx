@@ -22,9 +22,8 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDoubleArray.h"
 #include "vtkPiecewiseFunction.h"
-#include "vtkPointDataToCellData.h"
-#include "vtkTiledRayCastStatistics.h"
 #include "vtkTesting.h"
+#include "vtkTiledRayCastStatistics.h"
 #include "vtkTimerLog.h"
 #include "vtkVolumeMapper.h"
 
@@ -104,7 +103,8 @@ bool TestBand(vtkUnstructuredGrid* grid)
 {
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
-  trctest::WatchedVolume scene(grid, trcscene::MakeBandProperty(range, 0.3, 0.02, grid->GetLength() / 20), 160);
+  trctest::WatchedVolume scene(
+    grid, trcscene::MakeBandProperty(range, 0.3, 0.02, grid->GetLength() / 20), 160);
   scene.Renderer->GetActiveCamera()->Azimuth(30);
   scene.Renderer->GetActiveCamera()->Elevation(20);
   scene.Renderer->ResetCameraClippingRange();
@@ -150,8 +150,8 @@ bool TestBand(vtkUnstructuredGrid* grid)
   opacity->AddPoint(range[0] + 0.3 * w, 0.0);
   scene.Window->Render();
   ok = Expect(stats->GetNumberOfVisibleTetrahedra() != bandVisible, "an edited function") && ok;
-  ok = trctest::CheckAgainstReference(scene.Window, scene.Renderer, scene.Volume,
-         trctest::Bounds(), "edited band") &&
+  ok = trctest::CheckAgainstReference(
+         scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "edited band") &&
     ok;
 
   // New scalars reclassify: the same band over the negated field shows the other shell.
@@ -164,8 +164,8 @@ bool TestBand(vtkUnstructuredGrid* grid)
   }
   scene.Mapper->SetInputData(negated);
   scene.Window->Render();
-  ok = trctest::CheckAgainstReference(scene.Window, scene.Renderer, scene.Volume,
-         trctest::Bounds(), "negated scalars") &&
+  ok = trctest::CheckAgainstReference(
+         scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "negated scalars") &&
     ok;
 
   // Under a blend mode other than compositing, zero opacity still counts: nothing is skipped.
@@ -181,14 +181,11 @@ bool TestBand(vtkUnstructuredGrid* grid)
 
 bool TestCellScalars(vtkUnstructuredGrid* grid)
 {
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(grid);
-  toCells->Update();
-  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-  cells->GetPointData()->Initialize();
+  vtkSmartPointer<vtkUnstructuredGrid> cells = trctest::WithCellScalars(grid, false);
   double range[2];
   cells->GetCellData()->GetScalars()->GetRange(range);
-  trctest::WatchedVolume scene(cells, trcscene::MakeBandProperty(range, 0.5, 0.1, grid->GetLength() / 20), 160);
+  trctest::WatchedVolume scene(
+    cells, trcscene::MakeBandProperty(range, 0.5, 0.1, grid->GetLength() / 20), 160);
   scene.Renderer->GetActiveCamera()->Azimuth(-40);
   scene.Renderer->ResetCameraClippingRange();
   return CheckSkipping(scene, "cell scalars");
@@ -201,7 +198,8 @@ bool TestInside(vtkUnstructuredGrid* grid)
   double range[2], centre[3];
   grid->GetPointData()->GetScalars()->GetRange(range);
   grid->GetCenter(centre);
-  trctest::WatchedVolume scene(grid, trcscene::MakeBandProperty(range, 0.3, 0.05, grid->GetLength() / 10), 160);
+  trctest::WatchedVolume scene(
+    grid, trcscene::MakeBandProperty(range, 0.3, 0.05, grid->GetLength() / 10), 160);
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetFocalPoint(centre[0] + 1, centre[1] + 0.3, centre[2] + 0.2);
   camera->SetPosition(centre);
@@ -223,8 +221,7 @@ bool TestTransparent(vtkUnstructuredGrid* grid)
   property->GetScalarOpacity()->AddPoint(range[0], 0.0);
   property->GetScalarOpacity()->AddPoint(range[1], 0.0);
   trctest::WatchedVolume scene(grid, property, 64);
-  vtkNew<trctest::MessageCounter> errors;
-  scene.Mapper->AddObserver(vtkCommand::ErrorEvent, errors);
+  trctest::MessageCounter* errors = scene.CountErrors();
   scene.Mapper->SynchronousStatisticsOn();
   scene.Renderer->SetBackground(0.2, 0.3, 0.4);
   scene.Window->Render();
@@ -236,7 +233,8 @@ bool TestTransparent(vtkUnstructuredGrid* grid)
   vtkSmartPointer<vtkUnsignedCharArray> pixels = Pixels(scene.Window);
   scene.Volume->VisibilityOff();
   scene.Window->Render();
-  ok = Expect(MaximumDifference(pixels, Pixels(scene.Window)) == 0, "the background is untouched") &&
+  ok =
+    Expect(MaximumDifference(pixels, Pixels(scene.Window)) == 0, "the background is untouched") &&
     ok;
   ok = Expect(scene.Warnings->Count == 0 && errors->Count == 0, "no message") && ok;
   return ok;

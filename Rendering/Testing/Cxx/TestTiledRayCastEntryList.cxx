@@ -23,9 +23,6 @@
 #include "TiledRayCastTestScene.h"
 
 #include "vtkAppendFilter.h"
-#include "vtkDataSetTriangleFilter.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkTesting.h"
 #include "vtkTiledRayCastStatistics.h"
@@ -45,7 +42,8 @@ void Print(const char* label, vtkTiledRayCastStatistics* stats)
 
 bool CombRounds(int argc, char* argv[])
 {
-  vtkSmartPointer<vtkUnstructuredGrid> grid = trctest::ReadMesh(argc, argv, "comb6teeth_tetgen_270k.vtu");
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    trctest::ReadMesh(argc, argv, "comb6teeth_tetgen_270k.vtu");
   if (!grid)
   {
     return false;
@@ -89,8 +87,7 @@ bool CombRounds(int argc, char* argv[])
          scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "comb, camera moved") &&
     ok;
   std::cout << "comb, camera moved: " << incomplete << " incomplete rays\n";
-  ok = Expect(incomplete == 0 && scene.Warnings->Count == 0, "no ray incomplete, no warning") &&
-    ok;
+  ok = Expect(incomplete == 0 && scene.Warnings->Count == 0, "no ray incomplete, no warning") && ok;
   return ok;
 }
 
@@ -99,21 +96,8 @@ vtkSmartPointer<vtkUnstructuredGrid> SlabStack(int slabs)
   vtkNew<vtkAppendFilter> append;
   for (int i = 0; i < slabs; ++i)
   {
-    vtkNew<vtkImageData> slab;
-    slab->SetDimensions(2, 2, 2);
-    slab->SetSpacing(1.0, 1.0, 0.03);
-    slab->SetOrigin(0.0, 0.0, 0.1 * i);
-    vtkNew<vtkFloatArray> scalars;
-    scalars->SetName("scalar");
-    for (vtkIdType p = 0; p < 8; ++p)
-    {
-      const double* x = slab->GetPoint(p);
-      scalars->InsertNextValue(static_cast<float>(x[0] + x[1] + x[2]));
-    }
-    slab->GetPointData()->SetScalars(scalars);
-    vtkNew<vtkDataSetTriangleFilter> tets;
-    tets->SetInputData(slab);
-    append->AddInputConnection(tets->GetOutputPort());
+    append->AddInputData(trctest::TetrahedralBox({ 1.0, 1.0, 0.03 }, { 0.0, 0.0, 0.1 * i },
+      [](const double* x) { return x[0] + x[1] + x[2]; }));
   }
   append->Update();
   vtkSmartPointer<vtkUnstructuredGrid> grid = append->GetOutput();
@@ -153,8 +137,8 @@ bool SlabOverflow(bool synchronous)
       scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), label);
     Print(label, scene.Mapper->GetStatistics());
     ok = Expect(scene.Warnings->Count == 0, "no warning") && ok;
-    ok = Expect(scene.Mapper->GetStatistics()->GetNumberOfIncompleteRays() == 0,
-           "no ray incomplete") &&
+    ok = Expect(
+           scene.Mapper->GetStatistics()->GetNumberOfIncompleteRays() == 0, "no ray incomplete") &&
       ok;
     return ok;
   }
@@ -168,8 +152,7 @@ bool SlabOverflow(bool synchronous)
   }
   std::cout << "warnings: " << scene.Warnings->Count << " " << scene.Warnings->Text << "\n";
   ok = Expect(scene.Warnings->Count == (incomplete > 0 ? 1 : 0) &&
-      (incomplete == 0 ||
-        scene.Warnings->Text.find("missed boundary layers") != std::string::npos),
+      (incomplete == 0 || scene.Warnings->Text.find("missed boundary layers") != std::string::npos),
     "one warning exactly when rays were incomplete");
   ok = trctest::CheckAgainstReference(
          scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), label) &&
@@ -177,8 +160,7 @@ bool SlabOverflow(bool synchronous)
   scene.Window->Render();
   vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
   Print(label, stats);
-  ok = Expect(stats->GetNumberOfIncompleteRays() == 0, "the grown list holds the view") &&
-    ok;
+  ok = Expect(stats->GetNumberOfIncompleteRays() == 0, "the grown list holds the view") && ok;
   return ok;
 }
 }

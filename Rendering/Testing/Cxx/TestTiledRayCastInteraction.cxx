@@ -17,9 +17,6 @@
 // back one ray per pixel, checked against the full reference.
 #include "TiledRayCastTestScene.h"
 
-#include "vtkActor.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTiledRayCastStatistics.h"
 
@@ -121,32 +118,26 @@ bool TestFixedDistance(vtkUnstructuredGrid* grid, int pipeline, bool geometry)
 {
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
-  trctest::WatchedVolume scene(grid, trctest::MakeProperty(range[0], range[1], grid->GetLength() / 10), 200);
+  trctest::WatchedVolume scene(
+    grid, trctest::MakeProperty(range[0], range[1], grid->GetLength() / 10), 200);
   scene.Renderer->SetBackground(0.1, 0.1, 0.15);
   scene.Mapper->SetPipeline(pipeline);
   scene.Mapper->AutoAdjustSampleDistancesOff();
   scene.Mapper->SetImageSampleDistance(2.5f);
-  vtkNew<vtkSphereSource> sphere;
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  vtkNew<vtkActor> ball;
   if (geometry)
   {
     // An opaque ball inside the fin: rays stop at its depth.
     double centre[3];
     grid->GetCenter(centre);
-    sphere->SetCenter(centre);
-    sphere->SetRadius(0.15 * grid->GetLength());
-    sphere->SetThetaResolution(32);
-    sphere->SetPhiResolution(32);
-    sphereMapper->SetInputConnection(sphere->GetOutputPort());
-    ball->SetMapper(sphereMapper);
-    scene.Renderer->AddActor(ball);
+    scene.Renderer->AddActor(trctest::MakeBall(centre, 0.15 * grid->GetLength(), 32));
   }
   scene.Renderer->GetActiveCamera()->Azimuth(40);
   scene.Renderer->GetActiveCamera()->Elevation(15);
   scene.Renderer->ResetCameraClippingRange();
-  const std::string label = std::string(pipeline == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE
-                                ? "compute" : "fragment") + (geometry ? ", opaque ball" : "");
+  const std::string label =
+    std::string(
+      pipeline == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE ? "compute" : "fragment") +
+    (geometry ? ", opaque ball" : "");
   bool ok = CheckAgainstCoarseReference(scene, label);
   vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
   ok = Expect(stats->GetImageSize()[0] == 80 && stats->GetImageSize()[1] == 80 &&
@@ -168,7 +159,8 @@ bool TestAdjusted(vtkUnstructuredGrid* grid, int pipeline)
 {
   double range[2];
   grid->GetPointData()->GetScalars()->GetRange(range);
-  trctest::WatchedVolume scene(grid, trctest::MakeProperty(range[0], range[1], grid->GetLength() / 10), 200);
+  trctest::WatchedVolume scene(
+    grid, trctest::MakeProperty(range[0], range[1], grid->GetLength() / 10), 200);
   scene.Mapper->SetPipeline(pipeline);
   scene.Mapper->SynchronousStatisticsOn(); // every frame timed
   scene.Mapper->SetMaximumImageSampleDistance(4.0f);
@@ -177,8 +169,8 @@ bool TestAdjusted(vtkUnstructuredGrid* grid, int pipeline)
     pipeline == vtkTiledRayCastVolumeMapper::COMPUTE_PIPELINE ? "compute" : "fragment";
   bool ok = true;
   scene.Window->Render();
-  ok = Expect(stats->GetImageSampleDistance() == 1.0, label + ": the first frame has every ray") &&
-    ok;
+  ok =
+    Expect(stats->GetImageSampleDistance() == 1.0, label + ": the first frame has every ray") && ok;
   scene.Window->SetDesiredUpdateRate(1e5); // 10 microseconds a frame
   double coarsest = 1.0;
   for (int i = 0; i < 4; ++i)
@@ -187,8 +179,8 @@ bool TestAdjusted(vtkUnstructuredGrid* grid, int pipeline)
     scene.Window->Render();
     coarsest = std::max(coarsest, stats->GetImageSampleDistance());
   }
-  std::cout << label << ": interacting at an impossible rate, sample distance " << coarsest
-            << " (" << stats->GetImageSize()[0] << "x" << stats->GetImageSize()[1] << " rays)\n";
+  std::cout << label << ": interacting at an impossible rate, sample distance " << coarsest << " ("
+            << stats->GetImageSize()[0] << "x" << stats->GetImageSize()[1] << " rays)\n";
   ok = Expect(coarsest == 4.0, label + ": interaction takes the maximum distance") && ok;
   ok = Expect(stats->GetImageSize()[0] == 50, label + ": 50 x 50 rays") && ok;
   scene.Window->SetDesiredUpdateRate(0.0001); // vtkRenderWindowInteractor's still rate

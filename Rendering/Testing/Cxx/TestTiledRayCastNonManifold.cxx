@@ -17,10 +17,10 @@
 // Before the rule, the GPU followed one tetrahedron of the pair above the face while the
 // reference composited both: the face of three up to RMSE 13.6, max 97/255 off (4 views, both
 // orders), the cell listed twice up to RMSE 1.9, max 22.
+#include "TiledRayCastTestGrids.h"
 #include "TiledRayCastTestScene.h"
 
 #include "vtkCellTypeSource.h"
-#include "vtkDoubleArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTetMeshValidationReport.h"
@@ -30,20 +30,6 @@
 namespace
 {
 using trctest::Expect;
-
-// Point scalars s = x + 2y + 3z.
-void AddScalars(vtkUnstructuredGrid* grid)
-{
-  vtkNew<vtkDoubleArray> s;
-  s->SetName("s");
-  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    grid->GetPoint(i, p);
-    s->InsertNextValue(p[0] + 2 * p[1] + 3 * p[2]);
-  }
-  grid->GetPointData()->SetScalars(s);
-}
 
 // The face ABC with the apexes E (above, small), F (below), G (above, large, containing the
 // tetrahedron of E), cells in the order `apexes` (3 = E, 4 = F, 5 = G).
@@ -63,7 +49,7 @@ vtkSmartPointer<vtkUnstructuredGrid> FaceOfThree(const std::vector<vtkIdType>& a
     const vtkIdType ids[4] = { 0, 1, 2, apex };
     grid->InsertNextCell(VTK_TETRA, 4, ids);
   }
-  AddScalars(grid);
+  trctest::AddLinearScalars(grid);
   return grid;
 }
 
@@ -83,7 +69,7 @@ vtkSmartPointer<vtkUnstructuredGrid> BlockWithCopy(vtkIdType duplicate, bool wit
     grid->GetCellPoints(duplicate, ids);
     grid->InsertNextCell(VTK_TETRA, ids);
   }
-  AddScalars(grid);
+  trctest::AddLinearScalars(grid);
   return grid;
 }
 
@@ -101,15 +87,9 @@ bool Check(const std::string& label, vtkUnstructuredGrid* grid, vtkUnstructuredG
   const double views[4][2] = { { 0, 80 }, { 0, -80 }, { 45, 30 }, { 200, -20 } };
   for (int v = 0; v < 4; ++v)
   {
-    vtkCamera* camera = view.Renderer->GetActiveCamera();
-    camera->SetPosition(0, -1, 0);
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetViewUp(0, 0, 1);
-    camera->Azimuth(views[v][0]);
-    camera->Elevation(views[v][1]);
-    camera->OrthogonalizeViewUp();
+    trctest::LookFrom(view.Renderer->GetActiveCamera(), views[v][0], views[v][1]);
     view.Renderer->ResetCamera();
-    camera->Zoom(1.8);
+    view.Renderer->GetActiveCamera()->Zoom(1.8);
     view.Window->Render();
     const std::string name = label + ", view " + std::to_string(v);
     ok = trctest::CheckAgainstReference(
@@ -145,7 +125,7 @@ int TestTiledRayCastNonManifold(int, char*[])
   // A cell of the block's middle listed twice: the copy is left out.
   auto block = BlockWithCopy(0, false);
   const vtkIdType middle = block->GetNumberOfCells() / 2;
-  ok = Check("cell listed twice", BlockWithCopy(middle, true), BlockWithCopy(middle, false), 1) &&
-    ok;
+  ok =
+    Check("cell listed twice", BlockWithCopy(middle, true), BlockWithCopy(middle, false), 1) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

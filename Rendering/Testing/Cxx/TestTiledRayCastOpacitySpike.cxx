@@ -54,10 +54,7 @@ bool RenderSpike(vtkUnstructuredGrid* grid, double unitDistance, int mode)
   opacity->AddPoint(centre, 1.0, 0.3, 0.0);
   opacity->AddPoint(centre + half, 0.0);
   opacity->AddPoint(range[1], 0.0);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(unitDistance);
+  auto property = trcscene::MakeVolumeProperty(color, opacity, unitDistance);
 
   trctest::WatchedVolume scene(grid, property, 96);
   vtkTiledRayCastVolumeMapper* mapper = scene.Mapper;

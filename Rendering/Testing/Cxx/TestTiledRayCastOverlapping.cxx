@@ -17,15 +17,12 @@
 // alone.
 #include "TiledRayCastTestScene.h"
 
-#include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkMatrix4x4.h"
-#include "vtkPointDataToCellData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProjectedTetrahedraMapper.h"
-#include "vtkSphereSource.h"
 #include "vtkTesting.h"
 
+#include <array>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -48,11 +45,7 @@ vtkSmartPointer<vtkVolumeProperty> OtherProperty(vtkDataSet* grid, double fracti
   opacity->AddPoint(lo, 0.5);
   opacity->AddPoint(lo + 0.6 * (hi - lo), 0.1);
   opacity->AddPoint(hi, 0.3);
-  auto property = vtkSmartPointer<vtkVolumeProperty>::New();
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(fraction * grid->GetLength());
-  return property;
+  return trcscene::MakeVolumeProperty(color, opacity, fraction * grid->GetLength());
 }
 
 // How many warnings said that a volume is drawn on its own (not those of a mesh's validation).
@@ -65,6 +58,22 @@ int GroupWarnings(trctest::MessageCounter* warnings)
     ++count;
   }
   return count;
+}
+
+// `grid`'s volume scaled to `scale` of `around`'s size, turned, its centre at around's centre
+// plus `offset` times around's size.
+void Place(vtkVolume* volume, vtkDataSet* grid, vtkDataSet* around, double scale,
+  const std::array<double, 3>& offset, const std::array<double, 3>& orientation)
+{
+  double c[3], a[3];
+  grid->GetCenter(c);
+  around->GetCenter(a);
+  const double size = around->GetLength();
+  volume->SetOrigin(c);
+  volume->SetScale(scale * size / grid->GetLength());
+  volume->SetOrientation(orientation[0], orientation[1], orientation[2]);
+  volume->SetPosition(
+    a[0] - c[0] + offset[0] * size, a[1] - c[1] + offset[1] * size, a[2] - c[2] + offset[2] * size);
 }
 
 // Several volumes in one window, each with its own mapper.
@@ -96,6 +105,15 @@ struct Scene
     this->Renderer->AddVolume(volume);
     this->Volumes.push_back(volume);
     this->Mappers.push_back(mapper);
+    return volume;
+  }
+
+  // Add(), the volume placed in `around` (Place).
+  vtkVolume* AddPlaced(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, vtkDataSet* around,
+    double scale, const std::array<double, 3>& offset, const std::array<double, 3>& orientation)
+  {
+    vtkVolume* volume = this->Add(grid, property);
+    Place(volume, grid, around, scale, offset, orientation);
     return volume;
   }
 
@@ -191,32 +209,14 @@ bool CheckGroup(Scene& scene, const std::string& label)
   return ok;
 }
 
-// `grid`'s volume scaled to `scale` of `around`'s size, turned, its centre at around's centre
-// plus `offset` times around's size.
-void Place(vtkVolume* volume, vtkDataSet* grid, vtkDataSet* around, double scale,
-  const double offset[3], const double orientation[3])
-{
-  double c[3], a[3];
-  grid->GetCenter(c);
-  around->GetCenter(a);
-  const double size = around->GetLength();
-  volume->SetOrigin(c);
-  volume->SetScale(scale * size / grid->GetLength());
-  volume->SetOrientation(orientation[0], orientation[1], orientation[2]);
-  volume->SetPosition(
-    a[0] - c[0] + offset[0] * size, a[1] - c[1] + offset[1] * size, a[2] - c[2] + offset[2] * size);
-}
-
 // Two meshes with different transfer functions and matrices, overlapping; then the second one
 // in the fragment pipeline, which a group does not take: a warning, and drawn alone.
 bool TestTwo(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
 {
   Scene scene(128);
   scene.Add(torus, trctest::MakePropertyFor(torus, 0.08));
-  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
-  const double offset[3] = { 0.15, -0.05, 0.1 };
-  const double orientation[3] = { 20, 35, -10 };
-  Place(second, spx, torus, 0.7, offset, orientation);
+  vtkVolume* second = scene.AddPlaced(
+    spx, OtherProperty(spx, 0.1), torus, 0.7, { 0.15, -0.05, 0.1 }, { 20, 35, -10 });
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Elevation(25);
   scene.Renderer->ResetCameraClippingRange();
@@ -224,15 +224,7 @@ bool TestTwo(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
 
   // An opaque sphere in the overlap ends every volume's rays at its surface (the scene's depth,
   // which the volumes share).
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(second->GetCenter());
-  sphere->SetRadius(0.12 * torus->GetLength());
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sphereMapper);
+  auto ball = trctest::MakeBall(second->GetCenter(), 0.12 * torus->GetLength(), 24);
   scene.Renderer->AddActor(ball);
   ok = CheckGroup(scene, "two overlapping, an opaque sphere") && ok;
   scene.Renderer->RemoveActor(ball);
@@ -259,10 +251,8 @@ bool TestInside(vtkUnstructuredGrid* outer, vtkUnstructuredGrid* inner)
 {
   Scene scene(128);
   scene.Add(outer, trctest::MakePropertyFor(outer, 0.15));
-  vtkVolume* second = scene.Add(inner, OtherProperty(inner, 0.02));
-  const double offset[3] = { 0.02, 0.0, -0.02 };
-  const double orientation[3] = { 0, 60, 30 };
-  Place(second, inner, outer, 0.3, offset, orientation);
+  scene.AddPlaced(
+    inner, OtherProperty(inner, 0.02), outer, 0.3, { 0.02, 0.0, -0.02 }, { 0, 60, 30 });
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Azimuth(30);
   scene.Renderer->ResetCameraClippingRange();
@@ -317,10 +307,8 @@ bool TestCameraInside(vtkUnstructuredGrid* box)
 {
   Scene scene(128);
   scene.Add(box, trctest::MakePropertyFor(box, 0.2));
-  vtkVolume* second = scene.Add(box, OtherProperty(box, 0.3));
-  const double offset[3] = { 0.1, 0.05, 0.0 };
-  const double orientation[3] = { 10, 0, 30 };
-  Place(second, box, box, 0.9, offset, orientation);
+
+  scene.AddPlaced(box, OtherProperty(box, 0.3), box, 0.9, { 0.1, 0.05, 0.0 }, { 10, 0, 30 });
   vtkCamera* camera = scene.Renderer->GetActiveCamera();
   camera->SetPosition(0.55, 0.5, 0.45);
   camera->SetFocalPoint(1.55, 0.8, 0.6);
@@ -335,10 +323,8 @@ bool TestApart(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
 {
   Scene scene(128);
   scene.Add(torus, trctest::MakePropertyFor(torus, 0.08));
-  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
-  const double offset[3] = { 1.2, 0.0, 0.0 };
-  const double orientation[3] = { 0, 0, 0 };
-  Place(second, spx, torus, 0.7, offset, orientation);
+  vtkVolume* second =
+    scene.AddPlaced(spx, OtherProperty(spx, 0.1), torus, 0.7, { 1.2, 0.0, 0.0 }, { 0, 0, 0 });
   scene.Renderer->ResetCamera();
   bool ok = CheckScene(scene, trctest::Bounds(), "apart");
   for (auto& mapper : scene.Mappers)
@@ -386,22 +372,17 @@ bool TestFour(vtkUnstructuredGrid* spx)
   Scene scene(128);
   for (int i = 0; i < 4; ++i)
   {
-    vtkVolume* volume = scene.Add(spx,
+    scene.AddPlaced(spx,
       i % 2 == 0 ? trctest::MakePropertyFor(spx, 0.1 + 0.05 * i)
-                 : OtherProperty(spx, 0.1 + 0.05 * i));
-    const double offset[3] = { 0.08 * i, -0.04 * i, 0.02 * i };
-    const double orientation[3] = { 15.0 * i, 25.0 * i, -10.0 * i };
-    Place(volume, spx, spx, 1.0 - 0.1 * i, offset, orientation);
+                 : OtherProperty(spx, 0.1 + 0.05 * i),
+      spx, 1.0 - 0.1 * i, { 0.08 * i, -0.04 * i, 0.02 * i }, { 15.0 * i, 25.0 * i, -10.0 * i });
   }
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Elevation(-20);
   scene.Renderer->ResetCameraClippingRange();
   bool ok = CheckGroup(scene, "four overlapping");
 
-  vtkVolume* fifth = scene.Add(spx, OtherProperty(spx, 0.3));
-  const double offset[3] = { -0.05, 0.05, 0.0 };
-  const double orientation[3] = { 0, 0, 90 };
-  Place(fifth, spx, spx, 0.8, offset, orientation);
+  scene.AddPlaced(spx, OtherProperty(spx, 0.3), spx, 0.8, { -0.05, 0.05, 0.0 }, { 0, 0, 90 });
   scene.Window->Render();
   for (auto& mapper : scene.Mappers)
   {
@@ -422,10 +403,8 @@ bool TestThick(vtkUnstructuredGrid* box)
 {
   Scene scene(96);
   scene.Add(box, trctest::MakePropertyFor(box, 0.02));
-  vtkVolume* second = scene.Add(box, OtherProperty(box, 0.015));
-  const double offset[3] = { 0.15, 0.1, 0.05 };
-  const double orientation[3] = { 30, 20, 10 };
-  Place(second, box, box, 0.8, offset, orientation);
+
+  scene.AddPlaced(box, OtherProperty(box, 0.015), box, 0.8, { 0.15, 0.1, 0.05 }, { 30, 20, 10 });
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Azimuth(20);
   scene.Renderer->ResetCameraClippingRange();
@@ -440,16 +419,9 @@ bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
   double range[2];
   fin->GetPointData()->GetScalars()->GetRange(range);
   scene.Add(fin, trcscene::MakeBandProperty(range, 0.5, 0.1, fin->GetLength() / 20));
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(spx);
-  toCells->Update();
-  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
-  cells->GetPointData()->Initialize();
-  vtkSmartPointer<vtkVolumeProperty> property = OtherProperty(spx, 0.1);
-  vtkVolume* second = scene.Add(cells, property);
-  const double offset[3] = { 0.0, 0.05, 0.0 };
-  const double orientation[3] = { 0, 30, 0 };
-  Place(second, spx, fin, 0.9, offset, orientation);
+  vtkSmartPointer<vtkUnstructuredGrid> cells = trctest::WithCellScalars(spx, false);
+  // The cells keep spx's points: placed as spx.
+  scene.AddPlaced(cells, OtherProperty(spx, 0.1), fin, 0.9, { 0.0, 0.05, 0.0 }, { 0, 30, 0 });
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Azimuth(-40);
   scene.Renderer->ResetCameraClippingRange();
@@ -470,9 +442,7 @@ bool TestSharedMapper(vtkUnstructuredGrid* spx)
   auto second = vtkSmartPointer<vtkVolume>::New();
   second->SetMapper(scene.Mappers[0]);
   second->SetProperty(OtherProperty(spx, 0.1));
-  const double offset[3] = { 0.1, 0.0, 0.0 };
-  const double orientation[3] = { 0, 30, 0 };
-  Place(second, spx, spx, 0.8, offset, orientation);
+  Place(second, spx, spx, 0.8, { 0.1, 0.0, 0.0 }, { 0, 30, 0 });
   scene.Renderer->AddVolume(second);
   scene.Renderer->ResetCamera();
   scene.Window->Render();

@@ -17,20 +17,14 @@
 #include "vtkActor.h"
 #include "vtkCellData.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
-#include "vtkFloatArray.h"
-#include "vtkImageData.h"
 #include "vtkLightKit.h"
 #include "vtkOpenGLTiledRayCastVolumeMapper.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPlane.h"
 #include "vtkPointData.h"
-#include "vtkPointDataToCellData.h"
-#include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
-#include "vtkSphereSource.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkVolumeMapper.h"
@@ -109,10 +103,7 @@ void UseTableBounds(Scene& s)
 // The scene's point scalars averaged to cell scalars, which the mapper renders.
 void UseCellScalars(Scene& s)
 {
-  vtkNew<vtkPointDataToCellData> toCells;
-  toCells->SetInputData(s.Grid);
-  toCells->Update();
-  s.Grid = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  s.Grid = trctest::WithCellScalars(s.Grid);
   s.Mapper->SetInputData(s.Grid);
   s.Mapper->SetScalarModeToUseCellData();
 }
@@ -300,21 +291,8 @@ SceneSetup TorusTable(int mode, double fraction)
 
 bool LoadThick(Scene& s, int mode)
 {
-  vtkNew<vtkImageData> box;
-  box->SetDimensions(2, 2, 2);
-  box->SetSpacing(4.0, 4.0, 24.0);
-  box->SetOrigin(-2.0, -2.0, -12.0);
-  vtkNew<vtkFloatArray> scalars;
-  scalars->SetName("scalar");
-  for (vtkIdType i = 0; i < 8; ++i)
-  {
-    scalars->InsertNextValue(static_cast<float>(80.0 + 40.0 * (box->GetPoint(i)[2] + 12.0) / 24.0));
-  }
-  box->GetPointData()->SetScalars(scalars);
-  vtkNew<vtkDataSetTriangleFilter> tets;
-  tets->SetInputData(box);
-  tets->Update();
-  s.Grid = tets->GetOutput();
+  s.Grid = trctest::TetrahedralBox({ 4.0, 4.0, 24.0 }, { -2.0, -2.0, -12.0 },
+    [](const double* x) { return 80.0 + 40.0 * (x[2] + 12.0) / 24.0; });
   s.Mapper->SetInputData(s.Grid);
   s.Mapper->SynchronousStatisticsOn();
   s.Mapper->SetIntegrationMode(mode);
@@ -324,12 +302,8 @@ bool LoadThick(Scene& s, int mode)
   vtkNew<vtkPiecewiseFunction> opacity;
   opacity->AddPoint(80.0, 0.0);
   opacity->AddPoint(120.0, 0.2);
-  vtkNew<vtkVolumeProperty> property;
-  property->SetColor(color);
-  property->SetScalarOpacity(opacity);
-  property->SetScalarOpacityUnitDistance(1.0);
   s.Volume->SetMapper(s.Mapper);
-  s.Volume->SetProperty(property);
+  s.Volume->SetProperty(trcscene::MakeVolumeProperty(color, opacity, 1.0));
   s.Renderer->AddVolume(s.Volume);
   s.Renderer->SetBackground(0, 0, 0);
   s.Window->SetMultiSamples(0);
@@ -532,15 +506,7 @@ void AddViewScenes(std::map<std::string, SceneSetup>& scenes)
           return false;
         double center[3];
         s.Grid->GetCenter(center);
-        vtkNew<vtkSphereSource> sphere;
-        sphere->SetCenter(center);
-        sphere->SetRadius(0.15 * s.Grid->GetLength());
-        sphere->SetThetaResolution(32);
-        sphere->SetPhiResolution(32);
-        vtkNew<vtkPolyDataMapper> sphereMapper;
-        sphereMapper->SetInputConnection(sphere->GetOutputPort());
-        vtkNew<vtkActor> actor;
-        actor->SetMapper(sphereMapper);
+        auto actor = trctest::MakeBall(center, 0.15 * s.Grid->GetLength(), 32);
         actor->GetProperty()->SetColor(0.9, 0.9, 0.9);
         s.Renderer->AddActor(actor);
         s.View(20, 30);

@@ -13,12 +13,9 @@
 // several windows. Every image is checked against the exact reference renderer.
 #include "TiledRayCastTestScene.h"
 
-#include "vtkActor.h"
 #include "vtkCommand.h"
 #include "vtkLight.h"
 #include "vtkPoints.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkSphereSource.h"
 
 namespace
 {
@@ -107,15 +104,7 @@ bool SceneDepth(Scene& s)
   bool ok = true;
   ok = Expect(!s.Mapper->GetStatistics()->GetSceneDepthCopied(), "volumes only: no depth copied") &&
     ok;
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetCenter(s.Volume->GetCenter());
-  sphere->SetRadius(0.15 * s.Volume->GetLength());
-  sphere->SetThetaResolution(24);
-  sphere->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> sphereMapper;
-  sphereMapper->SetInputConnection(sphere->GetOutputPort());
-  vtkNew<vtkActor> ball;
-  ball->SetMapper(sphereMapper);
+  auto ball = trctest::MakeBall(s.Volume->GetCenter(), 0.15 * s.Volume->GetLength(), 24);
   s.Renderer->AddActor(ball);
   s.Window->Render();
   ok =

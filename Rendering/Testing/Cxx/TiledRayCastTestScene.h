@@ -9,27 +9,33 @@
 
 =========================================================================*/
 // Helpers shared by the mapper's image tests: reading the test meshes, a transfer function (the
-// ramp of TiledRayCastSharedScenes.h, which the benchmarks use too), and
-// the check of a rendered image against the exact reference renderer (every baseline image of
-// the project is also checked this way, with the bounds stated by each test).
+// ramp of TiledRayCastSharedScenes.h, which the benchmarks use too), a mapper alone in a window
+// (WatchedVolume), an opaque ball, cell scalars, the views of the small blocks, and the check of
+// a rendered image against the exact reference renderer (every baseline image of the project is
+// also checked this way, with the bounds stated by each test).
 #ifndef TiledRayCastTestScene_h
 #define TiledRayCastTestScene_h
 
 #include "TiledRayCastMessageCounter.h" // For trctest::MessageCounter
 #include "TiledRayCastSharedScenes.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetTriangleFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPointData.h"
+#include "vtkPointDataToCellData.h"
+#include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
 #include "vtkTestUtilities.h"
 #include "vtkTetReferenceRenderer.h"
 #include "vtkTiledRayCastStatistics.h"
@@ -41,6 +47,7 @@
 #include "vtkXMLUnstructuredGridReader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -68,10 +75,19 @@ struct WatchedVolume
   vtkNew<vtkVolume> Volume;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;
+  vtkNew<MessageCounter> Errors; // counts the mapper's errors once CountErrors() is called
 
   WatchedVolume(vtkUnstructuredGrid* grid, vtkVolumeProperty* property, int size)
+    : WatchedVolume(property, size)
   {
     this->Mapper->SetInputData(grid);
+    this->Renderer->ResetCamera();
+  }
+
+  // The same without an input: the caller connects the mapper (a composite input, a pipeline)
+  // and places the camera.
+  WatchedVolume(vtkVolumeProperty* property, int size)
+  {
     this->Mapper->AddObserver(vtkCommand::WarningEvent, this->Warnings);
     this->Volume->SetMapper(this->Mapper);
     this->Volume->SetProperty(property);
@@ -79,9 +95,82 @@ struct WatchedVolume
     this->Window->SetMultiSamples(0);
     this->Window->SetSize(size, size);
     this->Window->AddRenderer(this->Renderer);
-    this->Renderer->ResetCamera();
+  }
+
+  // The mapper's errors are counted in Errors from now on, instead of failing the test.
+  MessageCounter* CountErrors()
+  {
+    this->Mapper->AddObserver(vtkCommand::ErrorEvent, this->Errors);
+    return this->Errors;
   }
 };
+
+// An opaque sphere (VTK's default material) of `radius` around `centre`, with `resolution`
+// steps in theta and phi (VTK's default, 8, where not given): geometry inside a volume.
+inline vtkSmartPointer<vtkActor> MakeBall(const double centre[3], double radius, int resolution = 8)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetCenter(centre[0], centre[1], centre[2]);
+  sphere->SetRadius(radius);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(sphere->GetOutputPort());
+  auto ball = vtkSmartPointer<vtkActor>::New();
+  ball->SetMapper(mapper);
+  return ball;
+}
+
+// The box of one voxel of `spacing` at `origin`, split into tetrahedra (vtkDataSetTriangleFilter),
+// with point scalars "scalar" = value(point) as float.
+inline vtkSmartPointer<vtkUnstructuredGrid> TetrahedralBox(const std::array<double, 3>& spacing,
+  const std::array<double, 3>& origin, const std::function<double(const double*)>& value)
+{
+  vtkNew<vtkImageData> box;
+  box->SetDimensions(2, 2, 2);
+  box->SetSpacing(spacing.data());
+  box->SetOrigin(origin.data());
+  vtkNew<vtkFloatArray> scalars;
+  scalars->SetName("scalar");
+  for (vtkIdType i = 0; i < 8; ++i)
+  {
+    scalars->InsertNextValue(static_cast<float>(value(box->GetPoint(i))));
+  }
+  box->GetPointData()->SetScalars(scalars);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(box);
+  tets->Update();
+  return tets->GetOutput();
+}
+
+// `grid` with its point data averaged to cell data (vtkPointDataToCellData); without
+// `keepPointData` the points lose their arrays: cell scalars only.
+inline vtkSmartPointer<vtkUnstructuredGrid> WithCellScalars(
+  vtkDataSet* grid, bool keepPointData = true)
+{
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(grid);
+  toCells->Update();
+  vtkSmartPointer<vtkUnstructuredGrid> cells =
+    vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  if (!keepPointData)
+  {
+    cells->GetPointData()->Initialize();
+  }
+  return cells;
+}
+
+// Points `camera` at the origin from -y, z up, then turns it by `azimuth` and `elevation`
+// degrees: the views of the small synthetic blocks (reset the camera to fit them afterwards).
+inline void LookFrom(vtkCamera* camera, double azimuth, double elevation)
+{
+  camera->SetPosition(0, -1, 0);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 0, 1);
+  camera->Azimuth(azimuth);
+  camera->Elevation(elevation);
+  camera->OrthogonalizeViewUp();
+}
 
 // Whether this machine's OpenGL can run the mapper (tests skip, VTK_SKIP_RETURN_CODE, where not).
 inline bool RenderingSupported()

@@ -17,6 +17,7 @@
 
 #include "TiledRayCastTestCheck.h" // For TRC_CHECK
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellType.h"
@@ -137,39 +138,16 @@ inline vtkSmartPointer<vtkPolyData> MakeBox(
 }
 
 /**
- * Two surfaces as one polydata (the second's points appended after the first's).
+ * Two surfaces as one polydata (vtkAppendPolyData: the second's points after the first's).
  */
 inline vtkSmartPointer<vtkPolyData> Combine(vtkPolyData* a, vtkPolyData* b)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
-  vtkIdType offset = 0;
-  for (vtkPolyData* part : { a, b })
-  {
-    for (vtkIdType i = 0; i < part->GetNumberOfPoints(); ++i)
-    {
-      points->InsertNextPoint(part->GetPoint(i));
-    }
-    auto iter = vtk::TakeSmartPointer(part->GetPolys()->NewIterator());
-    std::vector<vtkIdType> ids;
-    for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell())
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      iter->GetCurrentCell(npts, pts);
-      ids.assign(pts, pts + npts);
-      for (auto& id : ids)
-      {
-        id += offset;
-      }
-      polys->InsertNextCell(npts, ids.data());
-    }
-    offset += part->GetNumberOfPoints();
-  }
+  vtkNew<vtkAppendPolyData> append;
+  append->AddInputData(a);
+  append->AddInputData(b);
+  append->Update();
   auto combined = vtkSmartPointer<vtkPolyData>::New();
-  combined->SetPoints(points);
-  combined->SetPolys(polys);
+  combined->ShallowCopy(append->GetOutput());
   return combined;
 }
 
