@@ -195,9 +195,11 @@ vtkTiledRayCastComputePipeline::Replacements vtkTiledRayCastComputePipeline::Pro
 }
 
 //------------------------------------------------------------------------------
-bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
-  vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error)
+bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(vtkOpenGLRenderWindow* window,
+  const std::vector<vtkTiledRayCastGroupTraversal::Inputs>& inputs,
+  const std::vector<Replacements>& members, std::string& error)
 {
+  this->Group.Invalidate(); // until every program is built
   if (members.size() > static_cast<size_t>(vtkTiledRayCastGroupTraversal::MaximumMembers))
   {
     error = "A group of overlapping volumes has at most 4 volumes.";
@@ -224,8 +226,8 @@ bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
   {
     return false;
   }
-  return this->Group.Update(
-    members, "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
+  return this->Group.Update(inputs, members,
+    "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
 }
 
 //------------------------------------------------------------------------------
