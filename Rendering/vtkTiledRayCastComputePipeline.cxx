@@ -537,6 +537,8 @@ void vtkTiledRayCastComputePipeline::SetGroupUniforms(const Frame& frame)
     setup->SetFrameUniforms(member);
     setup->SetMeshUniforms(member);
     setup->SetIntegrationUniforms(member);
+    // A lone volume's walk stops where the group's rays stop (the first volume's threshold).
+    member->SetUniformf("in_earlyTerminationOpacity", frame.EarlyTerminationOpacity);
     const std::string depth = "in_opaqueDepth_v" + std::to_string(k);
     traversal->SetUniformi(depth.c_str(), frame.OpaqueDepthUnit);
   }
