@@ -41,6 +41,7 @@ struct TrcMember
   bool entryNear;
   float lastLambda; // the layer entered last, for the peeling rules
   uint lastKey;
+  int node; // the transfer function's node at or below its scalar where the last piece ended
 };
 
 // The volume's ray through a pixel, before its first entry; every word defined before it is read
@@ -65,6 +66,7 @@ void trcMemberStart(vec2 fragCoord, out TrcMember s)
   s.entryNear = false;
   s.lastLambda = 0.0;
   s.lastKey = 0u;
+  s.node = -2; // none yet
 }
 
 // Where the ray leaves its tet from s.from (the walk's arithmetic): s.exitAt and s.exitFace, the
@@ -189,12 +191,23 @@ int trcMemberNodes()
   return in_transferFunctionNodes;
 }
 
+// trcFindNode(s), where `hint` is likely to be the answer (the node where the volume's last piece
+// ended: a piece seldom crosses a node, so the next starts there): checked with two independent
+// reads instead of a binary search's dependent ones, else searched.
+int trcMemberFindNode(float s, int hint)
+{
+  int n = in_transferFunctionNodes;
+  bool above = hint < 0 || trcNodeScalar(max(hint, 0)) <= s;
+  bool under = hint + 1 >= n || s < trcNodeScalar(min(hint + 1, n - 1));
+  return hint >= -1 && hint < n && above && under ? hint : trcFindNode(s);
+}
+
 // The mixture of overlapping volumes (trcGroupMixture): over a piece where the volume's scalar
 // goes linearly from sf to sb, u from 0 to 1, `next` is the next node its scalar crosses
 // (going up, the first above sf; going down, the last below; constant, the node at or below).
-int trcMemberFirstNode(float sf, float sb)
+int trcMemberFirstNode(float sf, float sb, int hint)
 {
-  int below = trcFindNode(sf);
+  int below = trcMemberFindNode(sf, hint);
   if (sb > sf)
   {
     return below + 1;

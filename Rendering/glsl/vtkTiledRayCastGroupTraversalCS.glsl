@@ -48,13 +48,22 @@ const int TRC_GROUP_MAXIMUM_PANELS = 4096;
 // emission (sum of tau_i c_i) is e0 + e1 u + e2 u^2, u from 0 to 1: in panels of optical depth
 // up to TRC_GROUP_PANEL_DEPTH, each integrated with 3-point Gauss-Legendre (exact for the
 // emission, which is quadratic; the transmittance within a panel is an exponential of a
-// quadratic of at most that depth).
+// quadratic of at most that depth); a constant medium in closed form.
 void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float len,
   inout vec4 color)
 {
   float depth = 0.5 * (ta + tb) * len;
   if (!(len > 0.0) || !(depth > 0.0))
   {
+    return;
+  }
+  if (ta == tb && all(equal(e1, vec3(0.0))) && all(equal(e2, vec3(0.0))))
+  {
+    // A constant medium (cell scalars, or flat transfer functions): exact in closed form, one
+    // exponential however thick.
+    float opacity = 1.0 - exp(-depth);
+    color.rgb += (1.0 - color.a) * (e0 / ta) * opacity;
+    color.a += (1.0 - color.a) * opacity;
     return;
   }
   int n = clamp(int(ceil(depth / TRC_GROUP_PANEL_DEPTH)), 1, TRC_GROUP_MAXIMUM_PANELS);
@@ -95,12 +104,14 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
 // between cuts each volume's attenuation and colour are linear, the sums are linear and
 // quadratic (trcCompositeMixture). Each volume's code appears once (a line per volume), never
 // behind a loop over volumes, and the arrays are indexed by constants only.
+// Each volume's node where its piece ends is left in its state, to start the next piece's
+// search from.
 void trcGroupMixture(bool used[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
   float sb[TRC_GROUP_MEMBERS], float d, inout vec4 color)
 {
   int next[TRC_GROUP_MEMBERS];
   int crossings = 0;
-//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@]) : -1;
+//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@], trcVolume@.node) : -1;
 //TRC::EachMember crossings += used[@] ? trcMemberNodes_v@() : 0;
   float u0 = 0.0;
   for (int part = 0; part <= crossings && u0 < 1.0; ++part)
@@ -122,6 +133,8 @@ void trcGroupMixture(bool used[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
 //TRC::EachMember next[@] = trcMemberPassNodes_v@(used[@], sf[@], sb[@], next[@], u1);
     u0 = u1;
   }
+  // Going up, the node before the next is at or below the piece's end; going down, the next.
+//TRC::EachMember trcVolume@.node = used[@] ? (sb[@] > sf[@] ? next[@] - 1 : next[@]) : trcVolume@.node;
 }
 
 // Volume k (inside, pending or done) in the search for the nearest event: its exit, or its
