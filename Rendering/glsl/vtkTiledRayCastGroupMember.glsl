@@ -49,6 +49,9 @@ struct TrcMember
 void trcMemberStart(vec2 fragCoord, out TrcMember s)
 {
   s.ray = trcPixelRay(fragCoord);
+  // A group takes no volume with clipping planes (vtkTiledRayCastVolumeGroup::Refusal): said
+  // here, the walk's clipping test folds away and the state holds one word less.
+  s.ray.lambdaMin = -3.4e38;
   s.lambdaNear = in_lambdaNear;
   s.inside = false;
   s.pending = false;
