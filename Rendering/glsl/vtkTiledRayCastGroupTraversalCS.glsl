@@ -169,6 +169,26 @@ void trcGroupNextEntry(uint head, int k)
 //TRC::EachMember if (k == @) { trcVolume@.pending = pending; trcVolume@.entryLambda = lambda; trcVolume@.entryKey = key; trcVolume@.entryNear = nearPlane; }
 }
 
+// Volume `alone` inside, every other ahead of it or done: its own walk up to the nearest entry
+// of another (mu, where it stopped). False where the ray ends. Else it stopped at that entry,
+// inside (handedBack: the event loop takes at least that entry before the next walk), or left
+// its layer (it takes its next entry).
+bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, inout int steps,
+  inout bool stopped, out bool handedBack)
+{
+  float bound = TRC_GROUP_FAR;
+//TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
+  bool goesOn = true;
+  bool inside = true;
+//TRC::EachMember if (alone == @) { goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+  if (goesOn && !inside)
+  {
+    trcGroupNextEntry(head, alone);
+  }
+  handedBack = inside;
+  return goesOn;
+}
+
 void main()
 {
   trcClearGroupCounts();
@@ -203,23 +223,10 @@ void main()
     // every event cost every volume's walk).
     while (!finished)
     {
-      if (count == 1)
+      if (count == 1 && !trcGroupWalkAlone(head, alone, mu, color, steps, stopped, handedBack))
       {
-        float bound = TRC_GROUP_FAR;
-//TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
-        bool goesOn = true;
-        bool inside = true;
-//TRC::EachMember if (alone == @) { goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
-        if (!goesOn)
-        {
-          opaque = color.a >= in_groupEarlyTermination;
-          break;
-        }
-        if (!inside)
-        {
-          trcGroupNextEntry(head, alone);
-        }
-        handedBack = inside;
+        opaque = color.a >= in_groupEarlyTermination;
+        break;
       }
       while (true)
       {
