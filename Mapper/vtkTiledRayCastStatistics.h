@@ -187,6 +187,18 @@ public:
 
   ///@{
   /**
+   * How many times this frame composed the GLSL of the programs it draws with (the mapper's own,
+   * or a group's of overlapping volumes, in the statistics of the mapper that drew it) and
+   * compared it with the programs built: only when what decides the programs changed (layout,
+   * cell scalars, integration, blend mode, shading, empty-space skipping, the volumes of a
+   * group), 0 on a steady frame.
+   */
+  vtkSetMacro(NumberOfShaderCompositions, int);
+  vtkGetMacro(NumberOfShaderCompositions, int);
+  ///@}
+
+  ///@{
+  /**
    * Compute pipeline: the tetrahedra the rays walked: in all, per ray on average and the most
    * of any ray.
    */
@@ -349,6 +361,7 @@ protected:
   vtkIdType NumberOfIncompleteRays = 0;
   int NumberOfGroupedVolumes = 0;
   vtkIdType NumberOfMixedRays = 0;
+  int NumberOfShaderCompositions = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;
   double FirstHitTime = -1;

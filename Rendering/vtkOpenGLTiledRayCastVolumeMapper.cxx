@@ -287,6 +287,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdatePrograms(vtkOpenGLRe
   }
   const vtkTiledRayCastShaderComposition::Replacements common =
     vtkTiledRayCastShaderComposition::Compose(inputs, this->VisibleMesh.GetShaderDefinitions());
+  vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+  stats->SetNumberOfShaderCompositions(stats->GetNumberOfShaderCompositions() + 1);
   std::string error;
   const bool built = this->UseCompute
     ? this->Compute.UpdatePrograms(window, common, error)

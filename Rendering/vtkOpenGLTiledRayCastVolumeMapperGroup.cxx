@@ -96,6 +96,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(
 }
 
 //------------------------------------------------------------------------------
+vtkTiledRayCastShaderComposition::Inputs
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupInputs()
+{
+  return this->ProgramInputs(this->Context.Window);
+}
+
+//------------------------------------------------------------------------------
 vtkTiledRayCastComputePipeline::Replacements
 vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupCode()
 {
@@ -128,16 +135,28 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateGroupTextures(bool
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawGroup(vtkOpenGLRenderWindow* window,
   const int rays[2], const std::vector<vtkTiledRayCastGroupMember*>& members)
 {
-  std::vector<vtkTiledRayCastComputePipeline::Replacements> code;
+  // The programs are composed (every volume's GLSL, then compared with the programs built) only
+  // when what decides them changed, as a volume's own programs are (UpdatePrograms).
+  std::vector<vtkTiledRayCastGroupTraversal::Inputs> inputs;
   for (vtkTiledRayCastGroupMember* member : members)
   {
-    code.push_back(member->GetGroupCode());
+    inputs.push_back(member->GetGroupInputs());
   }
-  std::string error;
-  if (!this->Compute.UpdateGroupPrograms(window, code, error))
+  if (this->Compute.GroupProgramsChanged(inputs))
   {
-    this->ReportError(error + " The volumes are drawn one by one.");
-    return false;
+    std::vector<vtkTiledRayCastComputePipeline::Replacements> code;
+    for (vtkTiledRayCastGroupMember* member : members)
+    {
+      code.push_back(member->GetGroupCode());
+    }
+    vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+    stats->SetNumberOfShaderCompositions(stats->GetNumberOfShaderCompositions() + 1);
+    std::string error;
+    if (!this->Compute.UpdateGroupPrograms(window, inputs, code, error))
+    {
+      this->ReportError(error + " The volumes are drawn one by one.");
+      return false;
+    }
   }
   this->Group = members;
   const bool ok = this->DrawFrame(window, rays);

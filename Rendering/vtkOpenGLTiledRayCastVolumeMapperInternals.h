@@ -131,6 +131,7 @@ public:
   std::string GetGroupRefusal(vtkVolume* volume, bool prepared) override;
   bool PrepareGroupFrame(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window,
     bool draws, int rays[2]) override;
+  vtkTiledRayCastShaderComposition::Inputs GetGroupInputs() override;
   vtkTiledRayCastComputePipeline::Replacements GetGroupCode() override;
   vtkTiledRayCastComputePipeline::Member GetGroupMember() override;
   void ActivateGroupTextures(bool activate) override;

@@ -199,9 +199,11 @@ vtkTiledRayCastComputePipeline::Replacements vtkTiledRayCastComputePipeline::Pro
 }
 
 //------------------------------------------------------------------------------
-bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
-  vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error)
+bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(vtkOpenGLRenderWindow* window,
+  const std::vector<vtkTiledRayCastGroupTraversal::Inputs>& inputs,
+  const std::vector<Replacements>& members, std::string& error)
 {
+  this->Group.Invalidate(); // until every program is built
   if (members.size() > static_cast<size_t>(vtkTiledRayCastGroupTraversal::MaximumMembers))
   {
     error = "A group of overlapping volumes has at most 4 volumes.";
@@ -228,8 +230,8 @@ bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(
   {
     return false;
   }
-  return this->Group.Update(
-    members, "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
+  return this->Group.Update(inputs, members,
+    "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
 }
 
 //------------------------------------------------------------------------------
@@ -549,6 +551,8 @@ void vtkTiledRayCastComputePipeline::SetGroupUniforms(const Frame& frame)
     setup->SetFrameUniforms(member);
     setup->SetMeshUniforms(member);
     setup->SetIntegrationUniforms(member);
+    // A lone volume's walk stops where the group's rays stop (the first volume's threshold).
+    member->SetUniformf("in_earlyTerminationOpacity", frame.EarlyTerminationOpacity);
     const std::string depth = "in_opaqueDepth_v" + std::to_string(k);
     traversal->SetUniformi(depth.c_str(), frame.OpaqueDepthUnit);
   }

@@ -104,11 +104,23 @@ public:
 
   /**
    * The programs of a group of overlapping volumes traversed together (vtkTiledRayCastVolumeGroup):
-   * `members[k]` is volume k's `common` code as for UpdatePrograms. Each volume lists its
-   * entries with its own raster programs; one traversal integrates them all.
+   * `members[k]` is volume k's `common` code as for UpdatePrograms, composed from `inputs[k]`.
+   * Each volume lists its entries with its own raster programs; one traversal integrates them
+   * all.
    */
-  bool UpdateGroupPrograms(
-    vtkOpenGLRenderWindow* window, const std::vector<Replacements>& members, std::string& error);
+  bool UpdateGroupPrograms(vtkOpenGLRenderWindow* window,
+    const std::vector<vtkTiledRayCastGroupTraversal::Inputs>& inputs,
+    const std::vector<Replacements>& members, std::string& error);
+
+  /**
+   * Whether the group's programs are to be built (UpdateGroupPrograms) for volumes of these
+   * inputs, in the group's order: false when they were last built for them, so that a steady
+   * frame composes and compares no GLSL.
+   */
+  bool GroupProgramsChanged(const std::vector<vtkTiledRayCastGroupTraversal::Inputs>& inputs) const
+  {
+    return this->Group.Changed(inputs);
+  }
 
   /**
    * Taking part in VTK's dual depth peeling (vtkTiledRayCastVolumetricPeel): the programs of

@@ -120,9 +120,10 @@ std::string vtkTiledRayCastGroupTraversal::Expand(const std::string& code, int c
 }
 
 //------------------------------------------------------------------------------
-bool vtkTiledRayCastGroupTraversal::Update(
+bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
   const std::vector<Replacements>& members, const std::string& version, std::string& error)
 {
+  this->Composition.Reset();
   const int count = static_cast<int>(members.size());
   if (count < 1 || count > MaximumMembers)
   {
@@ -160,6 +161,7 @@ bool vtkTiledRayCastGroupTraversal::Update(
   vtkTiledRayCastComputeShader* program = this->Program;
   if (source == program->GetSource() && program->GetHandle() && count == this->NumberOfMembers)
   {
+    this->Composition.Built(inputs);
     return true;
   }
   if (!program->Build(source))
@@ -182,6 +184,7 @@ bool vtkTiledRayCastGroupTraversal::Update(
     }
   }
   this->NumberOfMembers = count;
+  this->Composition.Built(inputs);
   return true;
 }
 
@@ -206,4 +209,5 @@ void vtkTiledRayCastGroupTraversal::ReleaseGraphicsResources()
   }
   this->Program->ReleaseProgram();
   this->NumberOfMembers = 0;
+  this->Composition.Reset();
 }

@@ -29,7 +29,8 @@
 #ifndef vtkTiledRayCastGroupTraversal_h
 #define vtkTiledRayCastGroupTraversal_h
 
-#include "vtkNew.h" // For vtkNew
+#include "vtkNew.h"                           // For vtkNew
+#include "vtkTiledRayCastShaderComposition.h" // For vtkTiledRayCastGroupComposition
 
 #include <string>  // For std::string
 #include <utility> // For std::pair
@@ -48,13 +49,26 @@ public:
   static constexpr int MaximumMembers = 4;
   using Replacements = std::vector<std::pair<std::string, std::string>>;
 
+  using Inputs = vtkTiledRayCastShaderComposition::Inputs;
+
   /**
    * Build (or keep) the program for these volumes: `members[k]` is volume k's
-   * //TRC::Common::Dec, //TRC::Layout::Dec and //TRC::Integration::Dec code, `version` the
-   * program's first lines. False with a message when it does not build.
+   * //TRC::Common::Dec, //TRC::Layout::Dec and //TRC::Integration::Dec code, composed from
+   * `inputs[k]`, `version` the program's first lines. False with a message when it does not
+   * build.
    */
-  bool Update(
-    const std::vector<Replacements>& members, const std::string& version, std::string& error);
+  bool Update(const std::vector<Inputs>& inputs, const std::vector<Replacements>& members,
+    const std::string& version, std::string& error);
+
+  /**
+   * Whether the program (and the group's raster programs, built with it) is to be built for
+   * volumes of these inputs: false when it was last built for them.
+   */
+  bool Changed(const std::vector<Inputs>& inputs) const
+  {
+    return this->Composition.Changed(inputs);
+  }
+  void Invalidate() { this->Composition.Reset(); }
 
   vtkTiledRayCastComputeShader* GetProgram();
 
@@ -84,6 +98,7 @@ private:
   vtkNew<vtkTiledRayCastComputeShader> Program;
   vtkNew<vtkTiledRayCastMemberUniforms> Members[MaximumMembers];
   int NumberOfMembers = 0;
+  vtkTiledRayCastGroupComposition Composition;
 };
 
 #endif

@@ -18,6 +18,7 @@
  * and may skip empty space. Inputs holds what decides these pieces; Changed() is true when they
  * differ from those of the programs last built (Built()), so that the pieces are composed, and
  * the programs compared, only when an input changed rather than every frame.
+ * vtkTiledRayCastGroupComposition does the same for the traversal of overlapping volumes.
  *
  * Private to the module: not wrapped, not installed.
  */
@@ -83,6 +84,34 @@ public:
 
 private:
   Inputs Last;
+  bool Valid = false;
+};
+
+/**
+ * The same for the programs of a group of overlapping volumes (vtkTiledRayCastVolumeGroup):
+ * they hold every volume's pieces in the group's order, so they are composed again when a
+ * volume's inputs change (its layout, cell scalars, integration, blend mode, empty space) or
+ * the volumes do (their number or order), and not on a steady frame. Volumes of the same
+ * inputs make the same programs whichever mappers they belong to: the key is the inputs alone.
+ */
+class vtkTiledRayCastGroupComposition
+{
+public:
+  using Inputs = vtkTiledRayCastShaderComposition::Inputs;
+
+  bool Changed(const std::vector<Inputs>& members) const
+  {
+    return !this->Valid || members != this->Last;
+  }
+  void Built(const std::vector<Inputs>& members)
+  {
+    this->Last = members;
+    this->Valid = true;
+  }
+  void Reset() { this->Valid = false; }
+
+private:
+  std::vector<Inputs> Last;
   bool Valid = false;
 };
 

@@ -64,9 +64,11 @@ public:
     vtkOpenGLRenderWindow* window, bool draws, int rays[2]) = 0;
 
   /**
-   * The volume's GLSL (//TRC::Common::Dec, //TRC::Layout::Dec, //TRC::Integration::Dec) and
+   * What decides the volume's GLSL (the group's programs are composed again only when it
+   * changes), the GLSL (//TRC::Common::Dec, //TRC::Layout::Dec, //TRC::Integration::Dec) and
    * what its entry pass draws.
    */
+  virtual vtkTiledRayCastShaderComposition::Inputs GetGroupInputs() = 0;
   virtual vtkTiledRayCastComputePipeline::Replacements GetGroupCode() = 0;
   virtual vtkTiledRayCastComputePipeline::Member GetGroupMember() = 0;
 

@@ -1,22 +1,28 @@
 //TRC::Version
 //============================================================================
 // TiledRayCast, compute pipeline: one traversal of up to four overlapping
-// volumes (vtkTiledRayCastGroupPrograms composes it). Each volume has its own
+// volumes (vtkTiledRayCastGroupTraversal composes it). Each volume has its own
 // mesh, transfer function, matrix and rays: its code is the one-volume code
-// with a suffix per volume (vtkTiledRayCastGroupMember.glsl), reached here
-// through the trcGroup* functions below. Every volume's entries are in one
-// per-pixel list (TRC_GROUP_ENTRIES: a fourth word says whose).
+// with a suffix per volume (vtkTiledRayCastGroupMember.glsl), called here by
+// the lines marked EachMember, one per volume. Every volume's entries are in
+// one per-pixel list (TRC_GROUP_ENTRIES: a fourth word says whose).
 //
 // Volumes meet on a ray through mu = lambda - lambdaNear, the same for every
 // volume at the same point (the volume matrices are affine, and lambda runs
 // from the near plane to the far plane). Each volume is inside a tet or
-// waiting for its next entry; the ray goes from event to event (a volume
-// leaves its tet, or a volume enters), integrating each piece with the
-// volumes inside: one alone as its own walk does (trcIntegrate, exact), two
-// or more as their mixture (trcGroupMixture, docs/design.md "Overlapping
-// media"). Each volume takes its entries with the one-volume traversal's
-// rules (trcNextEntry, vtkTiledRayCastEntryList.glsl), so where it overlaps
-// no other, a ray sees what it sees alone.
+// waiting for its next entry. Where one volume is inside and every other is
+// ahead or done, that volume walks alone with its own walk (trcWalk, the
+// one-volume traversal's loop and arithmetic) up to the nearest entry of
+// another, so that a ray sees what it sees when that volume is drawn alone.
+// Where two or more are inside, the ray goes from event to event (a volume
+// leaves its tet, or a volume enters), integrating each piece as their
+// mixture (trcGroupMixture, docs/design.md "Overlapping media"). Each volume
+// takes its entries with the one-volume traversal's rules (trcNextEntry,
+// vtkTiledRayCastEntryList.glsl).
+//
+// Each volume's state is a global of its own (trcVolume0, ...), never indexed
+// by a volume index that varies per ray: NVIDIA's compiler keeps such arrays
+// in local memory, not in registers.
 //============================================================================
 //TRC::Group::Members
 // The list's reading side too (trcNextEntry, in_peelEpsilon: each volume's entries only).
@@ -31,8 +37,6 @@ uniform int in_maximumSteps;
 // Early ray termination (the first volume's).
 uniform float in_groupEarlyTermination;
 
-const int TRC_GROUP_MAXIMUM_STALLS = 64; // as TRC_MAXIMUM_STALLS of the walk
-const uint TRC_GROUP_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 const float TRC_GROUP_FAR = 3.4e38;
 // Parts of a mixture are cut into panels of at most this optical depth, each integrated with
 // 3-point Gauss-Legendre (error bound in docs/design.md).
@@ -40,37 +44,11 @@ const float TRC_GROUP_PANEL_DEPTH = 0.5;
 const int TRC_GROUP_MAXIMUM_PANELS = 4096;
 
 //------------------------------------------------------------------------------
-// One function per thing the traversal needs of volume m: each line marked EachMember is
-// repeated for every volume, @ replaced by its index.
-float trcGroupExit(int m, vec3 origin, vec3 dir, uint tet, int entry, float lambda,
-  out int exitFace, out vec4 field, out uvec4 words)
-{
-  exitFace = 0;
-  field = vec4(0.0);
-  words = uvec4(0u);
-  float exitLambda = lambda;
-//TRC::EachMember if (m == @) exitLambda = trcMemberExit_v@(origin, dir, tet, entry, lambda, exitFace, field, words);
-  return exitLambda;
-}
-
-bool trcGroupNext(int m, uvec4 words, int exitFace, inout uint tet, inout int entry)
-{
-  bool inside = false;
-//TRC::EachMember if (m == @) inside = trcMemberNext_v@(words, exitFace, tet, entry);
-  return inside;
-}
-
-void trcGroupIntegrate(int m, float sf, float sb, float d, inout vec4 color)
-{
-//TRC::EachMember if (m == @) trcIntegrate_v@(sf, sb, d, color);
-}
-
-//------------------------------------------------------------------------------
 // A part of length len where the summed attenuation goes linearly from ta to tb and the summed
 // emission (sum of tau_i c_i) is e0 + e1 u + e2 u^2, u from 0 to 1: in panels of optical depth
 // up to TRC_GROUP_PANEL_DEPTH, each integrated with 3-point Gauss-Legendre (exact for the
 // emission, which is quadratic; the transmittance within a panel is an exponential of a
-// quadratic of at most that depth).
+// quadratic of at most that depth); a constant medium in closed form.
 void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float len,
   inout vec4 color)
 {
@@ -79,21 +57,33 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
   {
     return;
   }
+  if (ta == tb && all(equal(e1, vec3(0.0))) && all(equal(e2, vec3(0.0))))
+  {
+    // A constant medium (cell scalars, or flat transfer functions): exact in closed form, one
+    // exponential however thick.
+    float opacity = 1.0 - exp(-depth);
+    color.rgb += (1.0 - color.a) * (e0 / ta) * opacity;
+    color.a += (1.0 - color.a) * opacity;
+    return;
+  }
   int n = clamp(int(ceil(depth / TRC_GROUP_PANEL_DEPTH)), 1, TRC_GROUP_MAXIMUM_PANELS);
   float h = len / float(n);
-  const vec3 x = vec3(0.1127016653792583, 0.5, 0.8872983346207417);
-  const vec3 w = vec3(5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0);
+  // The 3 points and weights, written out: no array indexed in the loop.
+  const float x0 = 0.1127016653792583;
+  const float x2 = 0.8872983346207417;
+  const float wEnds = 5.0 / 18.0;
+  const float wMiddle = 8.0 / 18.0;
   for (int j = 0; j < n; ++j)
   {
     float a0 = mix(ta, tb, float(j) / float(n));
     float a1 = mix(ta, tb, float(j + 1) / float(n));
-    vec3 c = vec3(0.0);
-    for (int k = 0; k < 3; ++k)
-    {
-      float u = (float(j) + x[k]) / float(n);
-      vec3 e = e0 + u * (e1 + u * e2);
-      c += w[k] * e * exp(-h * x[k] * (a0 + 0.5 * (a1 - a0) * x[k]));
-    }
+    float da = 0.5 * (a1 - a0);
+    float u0 = (float(j) + x0) / float(n);
+    float u1 = (float(j) + 0.5) / float(n);
+    float u2 = (float(j) + x2) / float(n);
+    vec3 c = wEnds * (e0 + u0 * (e1 + u0 * e2)) * exp(-h * x0 * (a0 + da * x0)) +
+      wMiddle * (e0 + u1 * (e1 + u1 * e2)) * exp(-h * 0.5 * (a0 + da * 0.5)) +
+      wEnds * (e0 + u2 * (e1 + u2 * e2)) * exp(-h * x2 * (a0 + da * x2));
     color.rgb += (1.0 - color.a) * h * c;
     color.a += (1.0 - color.a) * (1.0 - exp(-0.5 * h * (a0 + a1)));
     if (color.a >= in_groupEarlyTermination)
@@ -103,24 +93,25 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
   }
 }
 
-// Where two or more volumes overlap, over a piece of world length d, volume m's scalar going
-// linearly from sf[m] to sb[m] (m inside): the mixture, attenuation sum tau_i, emission
-// sum tau_i c_i (docs/design.md, "Overlapping media"). The piece is cut at every node of every
-// volume's transfer function that its scalar crosses; between cuts each volume's attenuation
-// and colour are linear, the sums are linear and quadratic (trcCompositeMixture). Each
-// volume's code appears once (a line per volume), never behind a loop over volumes.
-void trcGroupMixture(bool inside[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
+//------------------------------------------------------------------------------
+// Each volume's state along this invocation's ray (vtkTiledRayCastGroupMember.glsl's TrcMember).
+//TRC::EachMember TrcMember_v@ trcVolume@;
+
+// Where two or more volumes are inside, over a piece of world length d, volume m's scalar going
+// linearly from sf[m] to sb[m] where used[m] (inside, its scalars finite): the mixture,
+// attenuation sum tau_i, emission sum tau_i c_i (docs/design.md, "Overlapping media"). The
+// piece is cut at every node of every volume's transfer function that its scalar crosses;
+// between cuts each volume's attenuation and colour are linear, the sums are linear and
+// quadratic (trcCompositeMixture). Each volume's code appears once (a line per volume), never
+// behind a loop over volumes, and the arrays are indexed by constants only.
+// Each volume's node where its piece ends is left in its state, to start the next piece's
+// search from.
+void trcGroupMixture(bool used[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
   float sb[TRC_GROUP_MEMBERS], float d, inout vec4 color)
 {
-  bool used[TRC_GROUP_MEMBERS];
   int next[TRC_GROUP_MEMBERS];
   int crossings = 0;
-  for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
-  {
-    // A tet touching a non-finite scalar is transparent, as in trcIntegrate.
-    used[m] = inside[m] && !isnan(sf[m]) && !isnan(sb[m]) && !isinf(sf[m]) && !isinf(sb[m]);
-  }
-//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@]) : -1;
+//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@], trcVolume@.node) : -1;
 //TRC::EachMember crossings += used[@] ? trcMemberNodes_v@() : 0;
   float u0 = 0.0;
   for (int part = 0; part <= crossings && u0 < 1.0; ++part)
@@ -142,6 +133,60 @@ void trcGroupMixture(bool inside[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS]
 //TRC::EachMember next[@] = trcMemberPassNodes_v@(used[@], sf[@], sb[@], next[@], u1);
     u0 = u1;
   }
+  // Going up, the node before the next is at or below the piece's end; going down, the next.
+//TRC::EachMember trcVolume@.node = used[@] ? (sb[@] > sf[@] ? next[@] - 1 : next[@]) : trcVolume@.node;
+}
+
+// Volume k (inside, pending or done) in the search for the nearest event: its exit, or its
+// entry, in mu; the lowest index first on a tie (the others follow at the same place).
+void trcGroupConsider(int k, bool inside, bool pending, float exitMu, float entryMu,
+  inout int m, inout float event, inout int count, inout int alone)
+{
+  float at = inside ? exitMu : entryMu;
+  count += inside ? 1 : 0;
+  alone = inside ? k : alone;
+  if ((inside || pending) && (m < 0 || at < event))
+  {
+    m = k;
+    event = at;
+  }
+}
+
+// Volume k left its layer at its `from`: its next entry, with the one-volume traversal's peeling
+// rules (among its own entries), never before where it left.
+void trcGroupNextEntry(uint head, int k)
+{
+  float from = 0.0;
+  float lastLambda = 0.0;
+  uint lastKey = 0u;
+//TRC::EachMember if (k == @) { from = trcVolume@.from; lastLambda = trcVolume@.lastLambda; lastKey = trcVolume@.lastKey; }
+  float lambda;
+  uint key;
+  bool nearPlane;
+  bool pending =
+    trcNextEntry(head, uint(k), false, from, lastLambda, lastKey, lambda, key, nearPlane) != 0u;
+  lambda = max(lambda, from);
+//TRC::EachMember if (k == @) { trcVolume@.pending = pending; trcVolume@.entryLambda = lambda; trcVolume@.entryKey = key; trcVolume@.entryNear = nearPlane; }
+}
+
+// Volume `alone` inside, every other ahead of it or done: its own walk up to the nearest entry
+// of another (mu, where it stopped). False where the ray ends. Else it stopped at that entry,
+// inside (handedBack: the event loop takes at least that entry before the next walk), or left
+// its layer (it takes its next entry).
+bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, inout int steps,
+  inout bool stopped, out bool handedBack)
+{
+  float bound = TRC_GROUP_FAR;
+//TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
+  bool goesOn = true;
+  bool inside = true;
+//TRC::EachMember if (alone == @) { goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+  if (goesOn && !inside)
+  {
+    trcGroupNextEntry(head, alone);
+  }
+  handedBack = inside;
+  return goesOn;
 }
 
 void main()
@@ -156,55 +201,11 @@ void main()
   if (head != 0u)
   {
     vec2 fragCoord = vec2(pixel) + 0.5;
-    // Each volume's ray, and its state: inside tet[m] from lambda from[m] to exitAt[m] (its
-    // own lambda), or waiting for the entry at entryLambda[m] (pending[m]).
-    vec3 origin[TRC_GROUP_MEMBERS];
-    vec3 dir[TRC_GROUP_MEMBERS];
-    float lambdaNear[TRC_GROUP_MEMBERS];
-    float worldScale[TRC_GROUP_MEMBERS];
-    bool inside[TRC_GROUP_MEMBERS];
-    uint tet[TRC_GROUP_MEMBERS];
-    int entry[TRC_GROUP_MEMBERS];
-    float from[TRC_GROUP_MEMBERS];
-    float exitAt[TRC_GROUP_MEMBERS];
-    int exitFace[TRC_GROUP_MEMBERS];
-    vec4 field[TRC_GROUP_MEMBERS];
-    uvec4 words[TRC_GROUP_MEMBERS];
-    int layerSteps[TRC_GROUP_MEMBERS];
-    int stalls[TRC_GROUP_MEMBERS];
-    bool pending[TRC_GROUP_MEMBERS];
-    float entryLambda[TRC_GROUP_MEMBERS];
-    uint entryKey[TRC_GROUP_MEMBERS];
-    bool entryNear[TRC_GROUP_MEMBERS];
-    float lastLambda[TRC_GROUP_MEMBERS];
-    uint lastKey[TRC_GROUP_MEMBERS];
-    float sf[TRC_GROUP_MEMBERS];
-    float sb[TRC_GROUP_MEMBERS];
     // Where opaque geometry or the far plane ends the ray, in mu.
     float muMax = TRC_GROUP_FAR;
-    float lambdaMax[TRC_GROUP_MEMBERS];
-//TRC::EachMember trcMemberRay_v@(fragCoord, origin[@], dir[@], lambdaNear[@], lambdaMax[@], worldScale[@]);
-    for (int m = 0; m < TRC_GROUP_MEMBERS; ++m)
-    {
-      muMax = min(muMax, lambdaMax[m] - lambdaNear[m]);
-      // Every state word defined before it is read (a volume that never enters keeps these).
-      inside[m] = false;
-      tet[m] = 0u;
-      entry[m] = -1;
-      from[m] = 0.0;
-      exitAt[m] = 0.0;
-      exitFace[m] = 0;
-      field[m] = vec4(0.0);
-      words[m] = uvec4(0u);
-      layerSteps[m] = 0;
-      stalls[m] = 0;
-      sf[m] = 0.0;
-      sb[m] = 0.0;
-      lastLambda[m] = 0.0;
-      lastKey[m] = 0u;
-      pending[m] = trcNextEntry(head, uint(m), true, 0.0, 0.0, 0u, entryLambda[m], entryKey[m],
-                     entryNear[m]) != 0u;
-    }
+//TRC::EachMember trcMemberStart_v@(fragCoord, trcVolume@);
+//TRC::EachMember muMax = min(muMax, trcVolume@.ray.lambdaMax - trcVolume@.lambdaNear);
+//TRC::EachMember trcVolume@.pending = trcNextEntry(head, @u, true, 0.0, 0.0, 0u, trcVolume@.entryLambda, trcVolume@.entryKey, trcVolume@.entryNear) != 0u;
     int steps = 0;
     uint layers = 0u;
     bool startedNear = false;
@@ -212,122 +213,73 @@ void main()
     bool stopped = false;
     bool mixed = false;
     float mu = -TRC_GROUP_FAR;
-    while (true)
+    int count = 0;  // volumes inside
+    int alone = -1; // the last of them
+    // After a walk that stopped at another volume's entry, at least one event before the next.
+    bool handedBack = false;
+    bool finished = false;
+    // The walks of lone volumes and the event loop are apart, each a tight loop of its own (a
+    // CPU implementation runs every branch of a loop body: walks inside the event loop made
+    // every event cost every volume's walk).
+    while (!finished)
     {
-      // The nearest event: volume m leaves its tet or enters (the lowest index first on a tie,
-      // the others follow at the same place). Only m moves on, so that each volume's walk
-      // appears once in the loop (a CPU implementation runs every branch of it).
-      int m = -1;
-      float event = TRC_GROUP_FAR;
-      int count = 0;
-      int alone = 0;
-      for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
+      if (count == 1 && !trcGroupWalkAlone(head, alone, mu, color, steps, stopped, handedBack))
       {
-        float at = TRC_GROUP_FAR;
-        if (inside[k])
-        {
-          at = exitAt[k] - lambdaNear[k];
-          ++count;
-          alone = k;
-        }
-        else if (pending[k])
-        {
-          at = entryLambda[k] - lambdaNear[k];
-        }
-        if ((inside[k] || pending[k]) && (m < 0 || at < event))
-        {
-          m = k;
-          event = at;
-        }
-      }
-      if (m < 0)
-      {
+        opaque = color.a >= in_groupEarlyTermination;
         break;
       }
-      // Integrate up to the event (or the end of the ray) with the volumes inside, each from
-      // where it is to there in its own lambda (its own exit exactly, when the event is that).
-      float end = min(event, muMax);
-      if (count > 0 && end > mu)
+      while (true)
       {
-        float to[TRC_GROUP_MEMBERS];
-        for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
+        // The nearest event: volume m leaves its tet or enters. Only m moves on.
+        int m = -1;
+        float event = TRC_GROUP_FAR;
+        count = 0;
+//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.exitAt - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
+        if (m < 0)
         {
-          to[k] = from[k];
-          if (inside[k])
-          {
-            to[k] = k == m && end == event ? exitAt[k] : min(exitAt[k], end + lambdaNear[k]);
-            to[k] = max(to[k], from[k]);
-            sf[k] = dot(field[k].xyz, origin[k] + from[k] * dir[k]) + field[k].w;
-            sb[k] = dot(field[k].xyz, origin[k] + to[k] * dir[k]) + field[k].w;
-          }
+          finished = true;
+          break;
         }
-        if (count == 1)
+        if (count == 1 && !handedBack)
         {
-          // One volume: its own integration, exactly as its own walk does.
-          trcGroupIntegrate(
-            alone, sf[alone], sb[alone], (to[alone] - from[alone]) * worldScale[alone], color);
+          break; // one volume inside: its own walk
         }
-        else
+        handedBack = false;
+        // Integrate up to the event (or the end of the ray) with the volumes inside, each from
+        // where it is to there in its own lambda (its own exit exactly, when the event is that).
+        float end = min(event, muMax);
+        if (count > 0 && end > mu)
         {
-          trcGroupMixture(inside, sf, sb, (end - mu) * worldScale[alone], color);
-          mixed = true;
+          bool used[TRC_GROUP_MEMBERS];
+          float sf[TRC_GROUP_MEMBERS];
+          float sb[TRC_GROUP_MEMBERS];
+          float scale = 0.0;
+//TRC::EachMember used[@] = trcMemberPiece_v@(trcVolume@, m == @ && end == event, end, sf[@], sb[@]);
+//TRC::EachMember scale = alone == @ ? trcVolume@.ray.worldScale : scale;
+          // One volume inside here only after a walk that stopped at the bound (a sliver).
+          trcGroupMixture(used, sf, sb, (end - mu) * scale, color);
+          mixed = mixed || count > 1;
         }
-        for (int k = 0; k < TRC_GROUP_MEMBERS; ++k)
+        if (color.a >= in_groupEarlyTermination)
         {
-          from[k] = to[k];
+          opaque = true;
+          finished = true;
+          break;
         }
-      }
-      if (color.a >= in_groupEarlyTermination)
-      {
-        opaque = true;
-        break;
-      }
-      if (event >= muMax)
-      {
-        break;
-      }
-      mu = max(mu, event);
-      // Volume m moves on: to the next tet, to its next entry (the one-volume traversal's
-      // peeling rules), or into the tet it enters.
-      bool walks = true;
-      if (inside[m])
-      {
-        from[m] = exitAt[m];
-        if (stalls[m] <= TRC_GROUP_MAXIMUM_STALLS && layerSteps[m] < in_maximumSteps &&
-          trcGroupNext(m, words[m], exitFace[m], tet[m], entry[m]))
+        if (event >= muMax)
         {
-          ++layerSteps[m];
+          finished = true;
+          break;
         }
-        else
+        mu = max(mu, event);
+        // Volume m moves on: into the next tet, or the tet it enters; or it takes its next entry
+        // (the one-volume traversal's peeling rules).
+        bool moved = true;
+//TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
+        if (!moved)
         {
-          stopped = stopped || layerSteps[m] >= in_maximumSteps;
-          inside[m] = false;
-          walks = false;
-          pending[m] = trcNextEntry(head, uint(m), false, from[m], lastLambda[m], lastKey[m],
-                         entryLambda[m], entryKey[m], entryNear[m]) != 0u;
-          entryLambda[m] = max(entryLambda[m], from[m]);
+          trcGroupNextEntry(head, m);
         }
-      }
-      else
-      {
-        pending[m] = false;
-        inside[m] = true;
-        ++layers;
-        startedNear = startedNear || entryNear[m];
-        lastLambda[m] = entryLambda[m];
-        lastKey[m] = entryNear[m] ? TRC_GROUP_NEAR_PLANE_KEY : entryKey[m];
-        tet[m] = entryKey[m] >> 2u;
-        entry[m] = entryNear[m] ? -1 : int(entryKey[m] & 3u);
-        from[m] = entryLambda[m];
-        layerSteps[m] = 1;
-        stalls[m] = 0;
-      }
-      if (walks)
-      {
-        ++steps;
-        exitAt[m] = trcGroupExit(
-          m, origin[m], dir[m], tet[m], entry[m], from[m], exitFace[m], field[m], words[m]);
-        stalls[m] = exitAt[m] > from[m] ? 0 : stalls[m] + 1;
       }
     }
     atomicAdd(trcGroupRays, 1u);

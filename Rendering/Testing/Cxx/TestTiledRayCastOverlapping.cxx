@@ -14,7 +14,7 @@
 // two meshes with different transfer functions and matrices, a mesh inside a larger one, the
 // camera inside both; volumes that do not overlap are drawn alone, pixel for pixel as each
 // draws by itself; a volume a group cannot take (the fragment pipeline) warns once and is drawn
-// alone.
+// alone; a steady frame of a group composes no GLSL.
 #include "TiledRayCastTestScene.h"
 
 #include "vtkCellData.h"
@@ -408,7 +408,21 @@ bool TestThick(vtkUnstructuredGrid* box)
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Azimuth(20);
   scene.Renderer->ResetCameraClippingRange();
-  return CheckGroup(scene, "thick overlapping");
+  bool ok = CheckGroup(scene, "thick overlapping");
+
+  // Both of cell scalars: where they overlap the medium is constant per piece, integrated in
+  // closed form (trcCompositeMixture) rather than in panels.
+  vtkNew<vtkPointDataToCellData> toCells;
+  toCells->SetInputData(box);
+  toCells->Update();
+  vtkUnstructuredGrid* cells = vtkUnstructuredGrid::SafeDownCast(toCells->GetOutput());
+  cells->GetPointData()->Initialize();
+  for (auto& mapper : scene.Mappers)
+  {
+    mapper->SetInputData(cells);
+  }
+  ok = CheckGroup(scene, "thick overlapping, cell scalars") && ok;
+  return ok;
 }
 
 // Empty-space skipping (a band of one volume's scalars: rays enter and leave its visible part)
@@ -430,6 +444,69 @@ bool TestBandAndCells(vtkUnstructuredGrid* fin, vtkUnstructuredGrid* spx)
            fin->GetNumberOfCells(),
          "band and cell scalars: empty space skipped") &&
     ok;
+  return ok;
+}
+
+// The GLSL a frame composed, over every mapper of the scene (the one that drew the group counts
+// its programs).
+int Compositions(Scene& scene)
+{
+  int count = 0;
+  for (auto& mapper : scene.Mappers)
+  {
+    count += mapper->GetStatistics()->GetNumberOfShaderCompositions();
+  }
+  return count;
+}
+
+// The group's programs are composed only when what decides them changes: not on a steady frame
+// (the camera turns), again when a volume's transfer function makes it skip empty space (its
+// own shader variant, TRC_SKIP_EMPTY_SPACE) and when a volume joins the group.
+bool TestSteadyGroup(vtkUnstructuredGrid* spx)
+{
+  Scene scene(64);
+  scene.Add(spx, trctest::MakePropertyFor(spx, 0.1));
+  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
+  const double offset[3] = { 0.1, 0.0, 0.0 };
+  const double orientation[3] = { 0, 30, 0 };
+  Place(second, spx, spx, 0.8, offset, orientation);
+  scene.Renderer->ResetCamera();
+  auto grouped = [&scene](int volumes)
+  {
+    bool all = true;
+    for (auto& mapper : scene.Mappers)
+    {
+      all = all && mapper->GetStatistics()->GetNumberOfGroupedVolumes() == volumes;
+    }
+    return all;
+  };
+  auto frame = [&scene]()
+  {
+    scene.Renderer->GetActiveCamera()->Azimuth(3);
+    scene.Window->Render();
+    return Compositions(scene);
+  };
+  bool ok = Expect(frame() >= 1 && grouped(2), "steady group: the first frame composes");
+  ok = Expect(frame() == 0 && grouped(2), "steady group: a steady frame composes nothing") && ok;
+  ok = Expect(frame() == 0 && grouped(2), "steady group: nor the next") && ok;
+
+  double range[2];
+  spx->GetPointData()->GetScalars()->GetRange(range);
+  second->SetProperty(trcscene::MakeBandProperty(range, 0.5, 0.2, spx->GetLength() / 10));
+  ok =
+    Expect(frame() >= 1 && grouped(2) &&
+        scene.Mappers[1]->GetStatistics()->GetNumberOfVisibleTetrahedra() < spx->GetNumberOfCells(),
+      "steady group: a transfer function that skips empty space composes again") &&
+    ok;
+  ok = Expect(frame() == 0 && grouped(2), "steady group: then nothing") && ok;
+
+  vtkVolume* third = scene.Add(spx, trctest::MakePropertyFor(spx, 0.2));
+  const double offset3[3] = { -0.1, 0.05, 0.0 };
+  Place(third, spx, spx, 0.9, offset3, orientation);
+  ok = Expect(frame() >= 1 && grouped(3), "steady group: a third volume composes again") && ok;
+  ok = Expect(frame() == 0 && grouped(3), "steady group: then nothing") && ok;
+  // The programs kept are the right ones: the scene against the reference.
+  ok = CheckGroup(scene, "steady group, three volumes") && ok;
   return ok;
 }
 
@@ -477,5 +554,6 @@ int TestTiledRayCastOverlapping(int argc, char* argv[])
   ok = TestThick(box) && ok;
   ok = TestBandAndCells(fin, spx) && ok;
   ok = TestSharedMapper(spx) && ok;
+  ok = TestSteadyGroup(spx) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }
