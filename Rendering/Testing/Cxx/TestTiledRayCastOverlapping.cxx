@@ -466,10 +466,9 @@ bool TestSteadyGroup(vtkUnstructuredGrid* spx)
 {
   Scene scene(64);
   scene.Add(spx, trctest::MakePropertyFor(spx, 0.1));
-  vtkVolume* second = scene.Add(spx, OtherProperty(spx, 0.1));
-  const double offset[3] = { 0.1, 0.0, 0.0 };
-  const double orientation[3] = { 0, 30, 0 };
-  Place(second, spx, spx, 0.8, offset, orientation);
+  const std::array<double, 3> orientation = { 0, 30, 0 };
+  vtkVolume* second =
+    scene.AddPlaced(spx, OtherProperty(spx, 0.1), spx, 0.8, { 0.1, 0.0, 0.0 }, orientation);
   scene.Renderer->ResetCamera();
   auto grouped = [&scene](int volumes)
   {
@@ -500,9 +499,8 @@ bool TestSteadyGroup(vtkUnstructuredGrid* spx)
     ok;
   ok = Expect(frame() == 0 && grouped(2), "steady group: then nothing") && ok;
 
-  vtkVolume* third = scene.Add(spx, trctest::MakePropertyFor(spx, 0.2));
-  const double offset3[3] = { -0.1, 0.05, 0.0 };
-  Place(third, spx, spx, 0.9, offset3, orientation);
+  scene.AddPlaced(
+    spx, trctest::MakePropertyFor(spx, 0.2), spx, 0.9, { -0.1, 0.05, 0.0 }, orientation);
   ok = Expect(frame() >= 1 && grouped(3), "steady group: a third volume composes again") && ok;
   ok = Expect(frame() == 0 && grouped(3), "steady group: then nothing") && ok;
   // The programs kept are the right ones: the scene against the reference.
