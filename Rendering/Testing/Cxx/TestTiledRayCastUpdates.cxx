@@ -15,6 +15,7 @@
 
 #include "vtkCommand.h"
 #include "vtkLight.h"
+#include "vtkMath.h"
 #include "vtkPoints.h"
 
 namespace
@@ -188,6 +189,42 @@ bool TransferFunctionAndPoints(Scene& s)
   return ok;
 }
 
+// A deforming mesh over 10 frames, each against the exact reference (the motions of
+// Examples/Python/deforming_mesh.py): five of a wave along z, then five that flatten the mesh
+// along z, turn it inside out (every tetrahedron inverts: the mapper reorients them) and bring
+// it back. The points are put back at the end.
+bool DeformingFrames(Scene& s)
+{
+  bool ok = true;
+  vtkPoints* points = s.Grid->GetPoints();
+  vtkNew<vtkPoints> rest;
+  rest->DeepCopy(points);
+  double centre[3];
+  s.Grid->GetCenter(centre);
+  const double size = s.Grid->GetLength();
+  for (int frame = 0; frame < 10; ++frame)
+  {
+    const bool wave = frame < 5;
+    const double phase = wave ? 0.7 * frame : vtkMath::Pi() * (frame - 4) / 3.0;
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      rest->GetPoint(i, p);
+      p[2] = wave ? p[2] + 0.03 * size * std::sin(6.0 * (p[0] - centre[0]) / size + phase)
+                  : centre[2] + (p[2] - centre[2]) * std::cos(phase);
+      points->SetPoint(i, p);
+    }
+    points->Modified();
+    s.Window->Render();
+    const std::string label =
+      std::string(wave ? "wave" : "inside out") + ", deforming frame " + std::to_string(frame + 1);
+    ok = s.Matches(label.c_str()) && ok;
+  }
+  points->DeepCopy(rest);
+  points->Modified();
+  return ok;
+}
+
 // Everything freed, then rendered again; the same mapper in a second window and back.
 bool ReleaseAndSecondWindow(Scene& s)
 {
@@ -281,7 +318,7 @@ int TestTiledRayCastUpdates(int argc, char* argv[])
   }
   Scene s(grid);
   bool ok = true;
-  for (auto stage : { Viewports, SceneDepth, Shading, TransferFunctionAndPoints,
+  for (auto stage : { Viewports, SceneDepth, Shading, TransferFunctionAndPoints, DeformingFrames,
          ReleaseAndSecondWindow, PipelinesAndPasses })
   {
     ok = stage(s) && ok;
