@@ -58,10 +58,6 @@ vtkStandardNewMacro(vtkOpenGLTiledRayCastVolumeMapper);
 
 namespace
 {
-// Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
-// place: the next layer must then have a larger key than the last (both pipelines' peeling).
-const float PeelEpsilon = 2e-6f;
-
 void Activate(vtkTextureObject* texture, bool activate)
 {
   if (activate)
@@ -111,17 +107,8 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderFragment(vtkOpenGLRe
 {
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   vtkTiledRayCastFragmentPipeline::Frame frame;
-  frame.Window = window;
+  this->DescribeFrame(window, frame);
   frame.Reporter = self;
-  frame.Width = this->ImageSize[0];
-  frame.Height = this->ImageSize[1];
-  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
-  frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
-  frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
-  frame.Mirrored = this->Geometry.Mirrored;
-  frame.MaximumSteps = this->GetMaximumSteps();
-  frame.PeelEpsilon = PeelEpsilon;
   frame.TileSize = self->GetTileSize();
   frame.TetsPerPass = self->GetTetsPerPass();
   frame.OcclusionQueryInterval = self->GetOcclusionQueryInterval();
@@ -135,15 +122,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
 {
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   vtkTiledRayCastComputePipeline::Frame frame;
-  frame.Window = window;
-  frame.Width = this->ImageSize[0];
-  frame.Height = this->ImageSize[1];
-  frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
-  frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
-  frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
-  frame.Mirrored = this->Geometry.Mirrored;
-  frame.MaximumSteps = this->GetMaximumSteps();
-  frame.PeelEpsilon = PeelEpsilon;
+  this->DescribeFrame(window, frame);
   frame.Verify = this->Self->SynchronousStatistics;
   frame.PeelStage = this->PeelStage();
   frame.Peel = &this->VolumetricPeel;
@@ -151,7 +130,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
   frame.ViewportOrigin[1] = static_cast<float>(this->Viewport[1]);
-  std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
   if (!this->Group.empty())
   {
     // Overlapping volumes in one traversal: every volume's entries, their sums for the list.

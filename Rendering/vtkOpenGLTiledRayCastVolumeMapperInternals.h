@@ -44,7 +44,7 @@
 #include "vtkTiledRayCastVolumetricPeel.h"       // For vtkTiledRayCastVolumetricPeel
 #include "vtkTiledRayCastWarnings.h"             // For vtkTiledRayCastWarnings
 
-#include <algorithm> // For std::min
+#include <algorithm> // For std::min, std::copy
 #include <string>    // For std::string
 #include <vector>    // For std::vector
 
@@ -200,6 +200,26 @@ public:
   {
     // More than any ray can need in one layer: every tet once, plus the stalled steps allowed.
     return static_cast<int>(std::min<vtkIdType>(this->Mesh.NumberOfTets + 1024, VTK_INT_MAX));
+  }
+  // Two boundary faces whose entry points on a ray are closer than this (in lambda) are one
+  // place: the next layer must then have a larger key than the last (both pipelines' peeling).
+  static constexpr float PeelEpsilon = 2e-6f;
+  // What both pipelines' frames say alike: the window, the rays, the viewport they composite
+  // into, the entry faces and tets, the view's near plane and handedness, the step bound and the
+  // peeling tolerance.
+  template <typename FrameType>
+  void DescribeFrame(vtkOpenGLRenderWindow* window, FrameType& frame) const
+  {
+    frame.Window = window;
+    frame.Width = this->ImageSize[0];
+    frame.Height = this->ImageSize[1];
+    std::copy(this->Viewport, this->Viewport + 4, frame.Viewport);
+    frame.NumberOfBoundaryFaces = this->VisibleMesh.GetNumberOfFaces();
+    frame.NumberOfTetrahedra = this->Mesh.NumberOfTets;
+    frame.NearPlaneCutsMesh = this->Geometry.NearPlaneCutsMesh;
+    frame.Mirrored = this->Geometry.Mirrored;
+    frame.MaximumSteps = this->GetMaximumSteps();
+    frame.PeelEpsilon = PeelEpsilon;
   }
   // The GPU work of a frame in each pipeline, from the first hit to compositing (the caller
   // has pushed the framebuffer bindings; both pop them before compositing).
