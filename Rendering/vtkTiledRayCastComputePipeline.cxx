@@ -576,16 +576,16 @@ void vtkTiledRayCastComputePipeline::Traverse(
     setup.SetMeshUniforms(traversal);
     setup.SetIntegrationUniforms(traversal);
   }
+  else
+  {
+    this->SetGroupUniforms(frame);
+  }
   if (frame.PeelStage > 0)
   {
     // The depth peeling pass's textures (vtkTiledRayCastVolumetricPeel), and the back colour.
     frame.Peel->SetUniforms(traversal);
     vtkTiledRayCastComputeShader::BindImage(
       BackColorImageUnit, this->BackColor, GL_WRITE_ONLY, GL_RGBA16);
-  }
-  else
-  {
-    this->SetGroupUniforms(frame);
   }
   const int size[2] = { frame.Width, frame.Height };
   traversal->SetUniform2i("in_imageSize", size);
