@@ -13,7 +13,6 @@
 #include "vtkCallbackCommand.h"
 #include "vtkNew.h"
 #include "vtkRenderer.h"
-#include "vtkTiledRayCastVolumetricPeel.h"
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolume.h"
 
@@ -29,7 +28,7 @@ vtkTiledRayCastDeferredDraw::~vtkTiledRayCastDeferredDraw() = default;
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastDeferredDraw::Defer(vtkRenderer* renderer, vtkVolume* volume)
 {
-  if (this->Drawing || !vtkTiledRayCastVolumetricPeel::FindPass(volume))
+  if (this->Drawing)
   {
     return false;
   }

@@ -37,9 +37,10 @@ public:
   ~vtkTiledRayCastDeferredDraw();
 
   /**
-   * True when VTK's dual depth peeling is peeling `volume` (and this is not the deferred draw
-   * itself): the mapper's Render() is then called again when `renderer` has finished its frame,
-   * and should draw nothing now.
+   * Called while VTK's dual depth peeling is peeling `volume` (the mapper found its pass,
+   * vtkTiledRayCastVolumetricPeel): true unless this is the deferred draw itself. The mapper's
+   * Render() is then called again when `renderer` has finished its frame, and should draw
+   * nothing now.
    */
   bool Defer(vtkRenderer* renderer, vtkVolume* volume);
 
