@@ -189,6 +189,7 @@ vtkTiledRayCastComputePipeline::Replacements vtkTiledRayCastComputePipeline::Pro
     group ? "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n"
           : "#version 430 core\n#define TRC_ENTRY_LIST\n");
   replacements.emplace_back("//TRC::EntryList::Dec", vtkTiledRayCastEntryList);
+  replacements.emplace_back("//TRC::EntryTarget::Dec", vtkTiledRayCastEntryList);
   replacements.emplace_back("//TRC::TraversalTile::Dec", vtkTiledRayCastTraversalTile);
   replacements.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
   for (const char* tag : { "//TRC::Peel::Dec", "//TRC::Peel::Early", "//TRC::Peel::Impl" })

@@ -35,6 +35,7 @@
 #include "vtkTiledRayCastNearSliceGS.h"
 #include "vtkTiledRayCastNearSliceVS.h"
 #include "vtkTiledRayCastQuadVS.h"
+#include "vtkTiledRayCastRayTargets.h"
 #include "vtkTiledRayCastTraversalFS.h"
 #include "vtkTiledRayCastWalk.h"
 
@@ -152,6 +153,10 @@ bool vtkTiledRayCastFragmentPipeline::UpdatePrograms(vtkOpenGLRenderWindow* wind
   Replacements common = mapperCommon;
   common.insert(common.begin(), { "//TRC::Version", version });
   common.emplace_back("//TRC::Walk::Dec", vtkTiledRayCastWalk);
+  // The raster passes write the entries they find to the ray targets (the compute pipeline lists
+  // them instead).
+  common.emplace_back("//TRC::RayTargets::Dec", vtkTiledRayCastRayTargets);
+  common.emplace_back("//TRC::EntryTarget::Dec", vtkTiledRayCastRayTargets);
   const std::string peelDec = "uniform sampler2D in_previousState;\n"
                               "uniform sampler2D in_previousColor;\n"
                               "uniform sampler2D in_previousEntry;\n"

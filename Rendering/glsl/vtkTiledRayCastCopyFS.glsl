@@ -6,15 +6,9 @@
 // depth 1 for the others.
 //============================================================================
 //TRC::Common::Dec
+//TRC::RayTargets::Dec
 
-uniform sampler2D in_state;
-uniform sampler2D in_color;
-uniform sampler2D in_entry;
 uniform int in_markInactive;
-
-layout(location = 0) out vec4 fragOutput0;
-layout(location = 1) out vec4 fragOutput1;
-layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {

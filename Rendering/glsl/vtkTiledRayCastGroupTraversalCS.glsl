@@ -191,9 +191,7 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
 
 void main()
 {
-  trcClearGroupCounts();
-  barrier();
-
+  trcBeginTile();
   ivec2 pixel = trcTilePixel();
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
@@ -282,22 +280,7 @@ void main()
         }
       }
     }
-    atomicAdd(trcGroupRays, 1u);
-    atomicAdd(trcGroupSteps, uint(steps));
-    atomicMax(trcGroupMaximumSteps, uint(steps));
-    atomicMax(trcGroupMaximumLayers, layers);
-    if (startedNear)
-    {
-      atomicAdd(trcGroupNearPlaneRays, 1u);
-    }
-    if (opaque)
-    {
-      atomicAdd(trcGroupTerminatedEarly, 1u);
-    }
-    if (stopped)
-    {
-      atomicAdd(trcGroupStopped, 1u);
-    }
+    trcCountRay(steps, layers, startedNear, opaque, stopped);
     if (mixed)
     {
       atomicAdd(trcGroupMixed, 1u);
@@ -307,7 +290,5 @@ void main()
   {
     imageStore(in_colorImage, pixel, color);
   }
-
-  barrier();
-  trcAddGroupCounts();
+  trcEndTile();
 }

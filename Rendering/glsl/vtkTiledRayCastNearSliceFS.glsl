@@ -6,13 +6,7 @@
 
 flat in uint ip_tet;
 
-#ifdef TRC_ENTRY_LIST
-//TRC::EntryList::Dec
-#else
-layout(location = 0) out vec4 fragOutput0;
-layout(location = 1) out vec4 fragOutput1;
-layout(location = 2) out vec4 fragOutput2;
-#endif
+//TRC::EntryTarget::Dec
 
 void main()
 {

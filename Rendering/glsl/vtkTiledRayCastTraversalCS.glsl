@@ -122,9 +122,7 @@ bool trcCutRay(inout TrcRay ray, vec2 range, float fromLambda, float toLambda)
 
 void main()
 {
-  trcClearGroupCounts();
-  barrier();
-
+  trcBeginTile();
   ivec2 pixel = trcTilePixel();
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
@@ -159,22 +157,7 @@ void main()
     int status = trcTraverse(walk, ray, color, steps, startedNear);
 #endif
     layers = walk.entered;
-    atomicAdd(trcGroupRays, 1u);
-    atomicAdd(trcGroupSteps, uint(steps));
-    atomicMax(trcGroupMaximumSteps, uint(steps));
-    atomicMax(trcGroupMaximumLayers, layers);
-    if (startedNear)
-    {
-      atomicAdd(trcGroupNearPlaneRays, 1u);
-    }
-    if (status == TRC_DONE_OPAQUE)
-    {
-      atomicAdd(trcGroupTerminatedEarly, 1u);
-    }
-    if (status == TRC_ACTIVE)
-    {
-      atomicAdd(trcGroupStopped, 1u);
-    }
+    trcCountRay(steps, layers, startedNear, status == TRC_DONE_OPAQUE, status == TRC_ACTIVE);
 #ifdef TRC_BLEND_MODE
     // The blend modes accumulate something else than colour (vtkTiledRayCastBlendModes.glsl).
     color = trcFinishRay(color);
@@ -187,7 +170,5 @@ void main()
     imageStore(in_backColorImage, pixel, backColor);
 #endif
   }
-
-  barrier();
-  trcAddGroupCounts();
+  trcEndTile();
 }

@@ -10,21 +10,15 @@
 // colour and entry textures always flip together).
 //============================================================================
 //TRC::Common::Dec
+//TRC::RayTargets::Dec
 //TRC::Layout::Dec
 //TRC::Integration::Dec
 //TRC::Walk::Dec
 
-uniform sampler2D in_state;
-uniform sampler2D in_color;
-uniform sampler2D in_entry;
 uniform int in_tetsPerPass;
 // With no limit per pass, the most steps one ray may take in one pass (more than any ray can
 // need: every tet once, plus the stalled steps allowed).
 uniform int in_maximumSteps;
-
-layout(location = 0) out vec4 fragOutput0;
-layout(location = 1) out vec4 fragOutput1;
-layout(location = 2) out vec4 fragOutput2;
 
 void main()
 {

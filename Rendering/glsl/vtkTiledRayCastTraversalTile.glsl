@@ -46,8 +46,8 @@ shared uint trcGroupIncomplete;
 shared uint trcGroupMixed;
 #endif
 
-// Before the workgroup's barrier at the start of main.
-void trcClearGroupCounts()
+// First in main, reached by every invocation: the workgroup's counts start at zero.
+void trcBeginTile()
 {
   if (gl_LocalInvocationIndex == 0u)
   {
@@ -63,11 +63,35 @@ void trcClearGroupCounts()
     trcGroupMixed = 0u;
 #endif
   }
+  barrier();
 }
 
-// After the workgroup's barrier at the end of main: the first invocation adds the tile's counts.
-void trcAddGroupCounts()
+// One ray's counts (a ray of the tile whose pixel had entries): steps and layers taken, whether
+// it started at the near plane, ended opaque, or stopped at in_maximumSteps.
+void trcCountRay(int steps, uint layers, bool startedNear, bool opaque, bool stopped)
 {
+  atomicAdd(trcGroupRays, 1u);
+  atomicAdd(trcGroupSteps, uint(steps));
+  atomicMax(trcGroupMaximumSteps, uint(steps));
+  atomicMax(trcGroupMaximumLayers, layers);
+  if (startedNear)
+  {
+    atomicAdd(trcGroupNearPlaneRays, 1u);
+  }
+  if (opaque)
+  {
+    atomicAdd(trcGroupTerminatedEarly, 1u);
+  }
+  if (stopped)
+  {
+    atomicAdd(trcGroupStopped, 1u);
+  }
+}
+
+// Last in main, reached by every invocation: the first invocation adds the tile's counts.
+void trcEndTile()
+{
+  barrier();
   if (gl_LocalInvocationIndex == 0u && trcGroupRays == 0u)
   {
     atomicAdd(trcEmptyGroups, 1u);
