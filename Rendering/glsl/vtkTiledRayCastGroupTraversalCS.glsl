@@ -191,8 +191,7 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
 
 void main()
 {
-  trcBeginTile();
-  ivec2 pixel = trcTilePixel();
+  ivec2 pixel = trcBeginTile();
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
   vec4 color = vec4(0.0);

@@ -122,8 +122,7 @@ bool trcCutRay(inout TrcRay ray, vec2 range, float fromLambda, float toLambda)
 
 void main()
 {
-  trcBeginTile();
-  ivec2 pixel = trcTilePixel();
+  ivec2 pixel = trcBeginTile();
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
   vec4 color = vec4(0.0);

@@ -46,8 +46,21 @@ shared uint trcGroupIncomplete;
 shared uint trcGroupMixed;
 #endif
 
-// First in main, reached by every invocation: the workgroup's counts start at zero.
-void trcBeginTile()
+// This invocation's pixel: the workgroup's 8x4 pixels as four 4x2 blocks, one per 8 consecutive
+// invocations. A GPU runs the whole tile as one warp either way, but a CPU implementation
+// (llvmpipe) runs 8 invocations per SIMD vector, and a 4x2 block of rays walks more alike than
+// a row of 8.
+ivec2 trcTilePixel()
+{
+  uint lane = gl_LocalInvocationIndex;
+  ivec2 inBlock = ivec2(lane & 3u, (lane >> 2u) & 1u);
+  ivec2 block = ivec2((lane >> 3u) & 1u, lane >> 4u);
+  return ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
+}
+
+// First in main, reached by every invocation: the workgroup's counts start at zero. Returns this
+// invocation's pixel.
+ivec2 trcBeginTile()
 {
   if (gl_LocalInvocationIndex == 0u)
   {
@@ -64,6 +77,7 @@ void trcBeginTile()
 #endif
   }
   barrier();
+  return trcTilePixel();
 }
 
 // One ray's counts (a ray of the tile whose pixel had entries): steps and layers taken, whether
@@ -115,18 +129,6 @@ void trcEndTile()
       atomicAdd(trcStepsHigh, 1u);
     }
   }
-}
-
-// This invocation's pixel: the workgroup's 8x4 pixels as four 4x2 blocks, one per 8 consecutive
-// invocations. A GPU runs the whole tile as one warp either way, but a CPU implementation
-// (llvmpipe) runs 8 invocations per SIMD vector, and a 4x2 block of rays walks more alike than
-// a row of 8.
-ivec2 trcTilePixel()
-{
-  uint lane = gl_LocalInvocationIndex;
-  ivec2 inBlock = ivec2(lane & 3u, (lane >> 2u) & 1u);
-  ivec2 block = ivec2((lane >> 3u) & 1u, lane >> 4u);
-  return ivec2(gl_WorkGroupID.xy) * ivec2(8, 4) + block * ivec2(4, 2) + inBlock;
 }
 
 // The first node (index + 1) of the pixel's entry list, 0 for none; the head is set back to 0 for
