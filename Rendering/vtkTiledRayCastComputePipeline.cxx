@@ -505,19 +505,26 @@ void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const
   vtkOpenGLState* state = frame.Window->GetState();
   vtkOpenGLShaderCache* cache = frame.Window->GetShaderCache();
   const int capacity = static_cast<int>(this->EntryCapacity);
-  if (member.NearPlaneCutsMesh)
+  // What both raster programs take: a group's volumes list their entries into one list, each
+  // under its index, against the scene's depth the first volume holds (another volume's own
+  // scene-depth texture is not active in a group's frame).
+  auto setUniforms = [&](vtkShaderProgram* p)
   {
-    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
-    state->vtkglDisable(GL_CULL_FACE);
-    cache->ReadyShaderProgram(slices.Shader);
-    vtkShaderProgram* p = slices.Shader;
     setup.SetFrameUniforms(p);
     setup.SetMeshUniforms(p);
     p->SetUniformi("in_entryCapacity", capacity);
     if (group)
     {
       p->SetUniformi("in_groupMember", index);
+      p->SetUniformi("in_opaqueDepth", frame.OpaqueDepthUnit);
     }
+  };
+  if (member.NearPlaneCutsMesh)
+  {
+    // The camera may be inside the mesh: rays whose near-plane point lies in a tet start there.
+    state->vtkglDisable(GL_CULL_FACE);
+    cache->ReadyShaderProgram(slices.Shader);
+    setUniforms(slices.Shader);
     slices.VAO->Bind();
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(member.NumberOfTetrahedra));
   }
@@ -525,15 +532,8 @@ void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const
   state->vtkglEnable(GL_CULL_FACE);
   state->vtkglCullFace(member.Mirrored ? GL_FRONT : GL_BACK);
   cache->ReadyShaderProgram(faces.Shader);
-  vtkShaderProgram* p = faces.Shader;
-  setup.SetFrameUniforms(p);
-  setup.SetMeshUniforms(p);
-  setup.SetCoverageUniforms(p);
-  p->SetUniformi("in_entryCapacity", capacity);
-  if (group)
-  {
-    p->SetUniformi("in_groupMember", index);
-  }
+  setUniforms(faces.Shader);
+  setup.SetCoverageUniforms(faces.Shader);
   faces.VAO->Bind();
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * member.NumberOfBoundaryFaces));

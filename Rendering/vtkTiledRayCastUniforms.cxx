@@ -53,7 +53,12 @@ void vtkTiledRayCastUniforms::SetFrameUniforms(vtkShaderProgram* p)
   {
     p->SetUniform4fv("in_clippingPlanes", g.NumberOfClippingPlanes, g.ClippingPlanes);
   }
-  p->SetUniformi("in_opaqueDepth", this->Part.OpaqueDepth->GetTexture()->GetTextureUnit());
+  // In a group's frame only the first volume's scene depth is active: the group sets that one.
+  const int opaqueDepthUnit = this->Part.OpaqueDepth->GetTexture()->GetTextureUnit();
+  if (opaqueDepthUnit >= 0)
+  {
+    p->SetUniformi("in_opaqueDepth", opaqueDepthUnit);
+  }
   p->SetUniformf("in_earlyTerminationOpacity",
     static_cast<float>(this->Part.Mapper->GetEarlyRayTerminationOpacity()));
 }

@@ -518,6 +518,25 @@ bool TestSteadyGroup(vtkUnstructuredGrid* spx)
   ok = Expect(frame() == 0 && grouped(3), "steady group: then nothing") && ok;
   // The programs kept are the right ones: the scene against the reference.
   ok = CheckGroup(scene, "steady group, three volumes") && ok;
+
+  // Volumes of other programs than the first's clip their entries by the scene's depth too. Once
+  // they read an inactive unit (their own scene depth): right by chance until another mapper
+  // left a texture there.
+  for (size_t i = 0; i < scene.Volumes.size(); ++i)
+  {
+    vtkNew<vtkProjectedTetrahedraMapper> projected;
+    projected->SetInputData(scene.Mappers[i]->GetInput());
+    scene.Volumes[i]->SetMapper(projected);
+  }
+  scene.Window->Render();
+  for (size_t i = 0; i < scene.Volumes.size(); ++i)
+  {
+    scene.Volumes[i]->SetMapper(scene.Mappers[i]);
+  }
+  ok = CheckGroup(scene, "steady group, after VTK's projected tetrahedra drew its volumes") && ok;
+  auto ball = trctest::MakeBall(second->GetCenter(), 0.1 * spx->GetLength(), 24);
+  scene.Renderer->AddActor(ball);
+  ok = CheckGroup(scene, "steady group, an opaque sphere") && ok;
   return ok;
 }
 
