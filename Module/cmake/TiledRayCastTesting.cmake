@@ -5,7 +5,8 @@
 #   tiledraycast_add_python_test(<script> [NO_DISPLAY] [X] [DATA <dir>] [ARGS <arg>...])
 #       a Python test run by Debian's /usr/bin/python3 with the build tree's 'tiledraycast'
 # and the helpers every C++ test may include: ${TILEDRAYCAST_TEST_HELPERS_DIRECTORY}
-# (Testing/Cxx: the shared scenes, TRC_CHECK and the brute-force integrator).
+# (Testing/Cxx: the shared scenes, TRC_CHECK and the brute-force integrator). Every Python test
+# may import tiledraycast_testing (Testing/Python, on its PYTHONPATH).
 set(TILEDRAYCAST_TEST_HELPERS_DIRECTORY "${CMAKE_CURRENT_LIST_DIR}/../../Testing/Cxx")
 get_filename_component(TILEDRAYCAST_TEST_HELPERS_DIRECTORY
   "${TILEDRAYCAST_TEST_HELPERS_DIRECTORY}" ABSOLUTE)
@@ -48,7 +49,9 @@ mark_as_advanced(TILEDRAYCAST_PYTHON_TEST_PRELOAD)
 # importing the 'tiledraycast' package from the build tree, and are named
 # TiledRayCastPython-<script>. They get -D <data> -T <temporary directory>; the data directory
 # is Testing/Data (the meshes) unless DATA names another; ARGS follow them. NO_DISPLAY runs the
-# test with DISPLAY unset; X runs it under xvfb-run (label X), with neither -D nor -T.
+# test with DISPLAY unset; X runs it under xvfb-run (label X), with neither -D nor -T. Their
+# PYTHONPATH, in either case, holds the package and Testing/Python: the tests' shared helpers,
+# tiledraycast_testing.py.
 function (tiledraycast_add_python_test script)
   cmake_parse_arguments(PARSE_ARGV 1 _trc "NO_DISPLAY;X" "DATA" "ARGS")
   if (NOT TILEDRAYCAST_WRAP_PYTHON)
@@ -57,7 +60,8 @@ function (tiledraycast_add_python_test script)
   if (NOT _trc_DATA)
     set(_trc_DATA "${PROJECT_SOURCE_DIR}/Testing/Data")
   endif ()
-  set(_trc_environment "PYTHONPATH=${CMAKE_BINARY_DIR}/${TILEDRAYCAST_PYTHON_DESTINATION}")
+  set(_trc_environment
+    "PYTHONPATH=${CMAKE_BINARY_DIR}/${TILEDRAYCAST_PYTHON_DESTINATION}:${PROJECT_SOURCE_DIR}/Testing/Python")
   if (TILEDRAYCAST_PYTHON_TEST_PRELOAD)
     list(APPEND _trc_environment "LD_PRELOAD=${TILEDRAYCAST_PYTHON_TEST_PRELOAD}")
   endif ()

@@ -1,18 +1,16 @@
 """The 'tiledraycast' package imports next to vtkmodules, every wrapped class of its modules is
 there, and its classes work from Python."""
-import sys
 import unittest
 
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: F401  (VTK first)
 import tiledraycast
 from tiledraycast import vtkTetMeshValidationReport
+from tiledraycast_testing import argument, main
 
 
 def expected_classes():
     """The classes after --classes (ctest passes the modules' public classes), else none."""
-    if "--classes" in sys.argv:
-        return [c for c in sys.argv[sys.argv.index("--classes") + 1].split(",") if c]
-    return []
+    return [c for c in argument("--classes", "").split(",") if c]
 
 
 class TestPythonImport(unittest.TestCase):
@@ -42,5 +40,4 @@ class TestPythonImport(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    # ctest passes -D <data> -T <temporary> --classes <list>; unittest must not see them.
-    unittest.main(argv=[sys.argv[0]])
+    main()

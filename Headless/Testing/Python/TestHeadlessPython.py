@@ -8,7 +8,6 @@ ctest runs this with DISPLAY removed from the environment. It checks that
 - VTK_DEFAULT_OPENGL_WINDOW and vtkHeadlessObjectFactory.SetBackend() work from Python.
 """
 import os
-import sys
 import unittest
 
 from vtkmodules.vtkFiltersSources import vtkConeSource, vtkSphereSource
@@ -25,16 +24,10 @@ import vtkmodules.vtkInteractionStyle  # noqa: F401  (default interactor style)
 
 import tiledraycast  # noqa: F401  (installs the headless factory)
 from tiledraycast import vtkHeadlessEGLRenderWindow, vtkHeadlessObjectFactory
+from tiledraycast_testing import data_directory, main, temporary_directory
 
-
-def argument(flag, default):
-    """The value after `flag` on the command line (ctest passes -D <data> -T <temporary>)."""
-    args = sys.argv[1:]
-    return args[args.index(flag) + 1] if flag in args[:-1] else default
-
-
-DATA = argument("-D", os.path.join(os.path.dirname(__file__), "..", "Data"))
-TEMPORARY = argument("-T", ".")
+# This module's data (ctest passes it with -D): the baseline of the C++ window tests.
+DATA = data_directory(os.path.join(os.path.dirname(__file__), "..", "Data"))
 
 
 def add_test_scene(window):
@@ -111,7 +104,7 @@ class TestHeadlessPython(unittest.TestCase):
 
         testing = vtkTesting()
         for arg in ("-V", os.path.join(DATA, "Baseline", "TestHeadlessEGLWindow.png"),
-                    "-T", TEMPORARY):
+                    "-T", temporary_directory()):
             testing.AddArgument(arg)
         testing.SetRenderWindow(window)
         self.assertEqual(testing.RegressionTest(0.15), vtkTesting.PASSED)
@@ -143,5 +136,4 @@ class TestHeadlessPython(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    # ctest passes -D <data> -T <temporary>; unittest must not see them.
-    unittest.main(argv=[sys.argv[0]])
+    main()

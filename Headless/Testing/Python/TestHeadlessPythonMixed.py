@@ -13,6 +13,8 @@ import subprocess
 import sys
 import unittest
 
+from tiledraycast_testing import main
+
 CHILD = r"""
 from vtkmodules.vtkFiltersSources import vtkConeSource
 from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
@@ -64,4 +66,4 @@ class TestHeadlessPythonMixed(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main(argv=[sys.argv[0]])
+    main()

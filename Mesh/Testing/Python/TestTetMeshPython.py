@@ -1,32 +1,16 @@
 """vtkTetMeshBuilder from Python: build a mesh from a dataset, read counts, report and arrays."""
 import math
-import os
-import sys
 import unittest
 
 from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkTypeUInt32Array
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from tiledraycast import (vtkTetMesh, vtkTetMeshBuilder, vtkTetMeshCompactLayout,
                           vtkTetMeshLayout, vtkTetMeshPaperLayout)
-
-
-def data_directory():
-    """The directory after -D (ctest passes it), else the source tree's Testing/Data."""
-    if "-D" in sys.argv:
-        return sys.argv[sys.argv.index("-D") + 1]
-    return os.path.join(os.path.dirname(__file__), os.pardir, os.pardir, os.pardir, "Testing", "Data")
-
-
-def read(name):
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(data_directory(), "Meshes", name))
-    reader.Update()
-    return reader.GetOutput()
+from tiledraycast_testing import main, read_mesh
 
 
 class TestTetMeshPython(unittest.TestCase):
     def test_torus_vistrails(self):
-        grid = read("torus_vistrails.vtu")
+        grid = read_mesh("torus_vistrails.vtu")
         builder = vtkTetMeshBuilder()
         mesh = builder.Build(grid)
         self.assertIsInstance(mesh, vtkTetMesh)
@@ -103,5 +87,4 @@ class TestTetMeshPython(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    # ctest passes -D <data> -T <temporary>; unittest must not see them.
-    unittest.main(argv=[sys.argv[0]])
+    main()

@@ -6,42 +6,22 @@ tetrahedron of constant scalar against its closed form, and the integrator's clo
 constant attenuation.
 """
 import math
-import os
-import sys
 import unittest
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import (
-    VTK_TETRA,
-    vtkImageData,
-    vtkPiecewiseFunction,
-    vtkUnstructuredGrid,
-)
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (
-    vtkCamera,
-    vtkColorTransferFunction,
-    vtkVolumeProperty,
-)
-from vtkmodules.vtkCommonCore import vtkFloatArray
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkFloatArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import VTK_TETRA, vtkImageData, vtkUnstructuredGrid
+from vtkmodules.vtkRenderingCore import vtkCamera
 from tiledraycast import vtkTetRayIntegrator, vtkTetReferenceRenderer, vtkTetReferenceVolume
+from tiledraycast_testing import main, read_mesh, volume_property
 
-DATA = None
+# Blue, green at the middle, red; opacity 0.05 to 0.9, over the scalar range.
+COLORS = ((0.0, (0.1, 0.2, 1.0)), (0.5, (0.2, 1.0, 0.3)), (1.0, (1.0, 0.3, 0.1)))
+OPACITIES = ((0.0, 0.05), (1.0, 0.9))
 
 
-def make_property(lo, hi, unit):
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(lo, 0.1, 0.2, 1.0)
-    color.AddRGBPoint(0.5 * (lo + hi), 0.2, 1.0, 0.3)
-    color.AddRGBPoint(hi, 1.0, 0.3, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(lo, 0.05)
-    opacity.AddPoint(hi, 0.9)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
-    return prop
+def constant(value):
+    """A ramp that is `value` over the whole range."""
+    return ((0.0, value), (1.0, value))
 
 
 def unit_tetrahedron():
@@ -84,11 +64,7 @@ def pixel_chords(n):
 
 class TestReferenceRendererPython(unittest.TestCase):
     def test_dataset(self):
-        reader = vtkXMLUnstructuredGridReader()
-        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-        reader.Update()
-        grid = reader.GetOutput()
-        lo, hi = grid.GetPointData().GetScalars().GetRange()
+        grid = read_mesh("spx_vistrails.vtu")
         b = grid.GetBounds()
         diag = math.sqrt((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2)
         center = [(b[0] + b[1]) / 2, (b[2] + b[3]) / 2, (b[4] + b[5]) / 2]
@@ -100,7 +76,8 @@ class TestReferenceRendererPython(unittest.TestCase):
 
         renderer = vtkTetReferenceRenderer()
         renderer.SetInputData(grid)
-        renderer.SetVolumeProperty(make_property(lo, hi, diag / 15))
+        renderer.SetVolumeProperty(volume_property(grid.GetPointData().GetScalars().GetRange(),
+                                                   COLORS, OPACITIES, diag / 15))
         renderer.SetCamera(camera)
         renderer.SetImageSize(64, 48)
         self.assertEqual(renderer.Render(), 1)
@@ -133,11 +110,7 @@ class TestReferenceRendererPython(unittest.TestCase):
         # Looking down -z with a parallel projection: the chord at (x, y) is 1 - x - y.
         camera = camera_down_z()
         tau = 1.7
-        prop = make_property(0.0, 1.0, 1.0)
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(0.0, tau)
-        opacity.AddPoint(1.0, tau)
-        prop.SetScalarOpacity(opacity)
+        prop = volume_property((0.0, 1.0), COLORS, constant(tau), 1.0)
         renderer = vtkTetReferenceRenderer()
         renderer.SetInputData(grid)
         renderer.SetVolumeProperty(prop)
@@ -151,11 +124,7 @@ class TestReferenceRendererPython(unittest.TestCase):
             self.assertAlmostEqual(alpha, -math.expm1(-tau * chord), delta=1e-12)
 
     def test_integrator(self):
-        prop = make_property(0.0, 1.0, 2.0)
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(0.0, 0.8)
-        opacity.AddPoint(1.0, 0.8)
-        prop.SetScalarOpacity(opacity)
+        prop = volume_property((0.0, 1.0), COLORS, constant(0.8), 2.0)
         integrator = vtkTetRayIntegrator()
         self.assertEqual(integrator.Initialize(prop), 1)
         rgba = [0.0, 0.0, 0.0, 0.0]
@@ -172,16 +141,7 @@ class TestReferenceRendererPython(unittest.TestCase):
         camera = camera_down_z()
 
         def prop(tau, rgb):
-            color = vtkColorTransferFunction()
-            color.AddRGBPoint(0.0, *rgb)
-            color.AddRGBPoint(1.0, *rgb)
-            opacity = vtkPiecewiseFunction()
-            opacity.AddPoint(0.0, tau)
-            opacity.AddPoint(1.0, tau)
-            p = vtkVolumeProperty()
-            p.SetColor(color)
-            p.SetScalarOpacity(opacity)
-            return p
+            return volume_property((0.0, 1.0), constant(rgb), constant(tau))
 
         renderer = vtkTetReferenceRenderer()
         renderer.SetCamera(camera)
@@ -211,9 +171,4 @@ class TestReferenceRendererPython(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    # ctest passes -D <data> -T <temporary>; unittest must not see them.
-    if "-D" in sys.argv:
-        DATA = sys.argv[sys.argv.index("-D") + 1]
-    else:
-        DATA = os.path.join(os.path.dirname(__file__), "..", "..", "..", "Testing", "Data")
-    unittest.main(argv=[sys.argv[0]])
+    main()

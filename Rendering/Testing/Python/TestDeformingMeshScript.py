@@ -4,23 +4,19 @@ rebuilt (the points only: well under the first frame's upload) and drew. Bad siz
 """
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import unittest
 
-from vtkmodules.vtkIOImage import vtkPNGReader
+from tiledraycast_testing import (example_script, main, mesh_path, png_size,
+                                  run_without_display)
 
-SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-SCRIPT = os.path.join(SOURCE, "Examples", "Python", "deforming_mesh.py")
-MESH = os.path.join(SOURCE, "Testing", "Data", "Meshes", "spx_vistrails.vtu")
+SCRIPT = example_script("deforming_mesh.py")
+MESH = mesh_path("spx_vistrails.vtu")
 
 
 def run(*args):
-    environment = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
-    result = subprocess.run([sys.executable, SCRIPT, "--mesh", MESH] + list(args),
-                            capture_output=True, text=True, timeout=600, env=environment)
-    return result.returncode, result.stdout, result.stderr
+    return run_without_display([sys.executable, SCRIPT, "--mesh", MESH] + list(args))
 
 
 class DeformingMeshScript(unittest.TestCase):
@@ -32,10 +28,7 @@ class DeformingMeshScript(unittest.TestCase):
                 self.assertEqual(code, 0, stderr)
                 frames = sorted(os.listdir(out))
                 self.assertEqual(frames, ["frame_%03d.png" % i for i in range(4)])
-                reader = vtkPNGReader()
-                reader.SetFileName(os.path.join(out, frames[-1]))
-                reader.Update()
-                self.assertEqual(reader.GetOutput().GetDimensions()[:2], (96, 96))
+                self.assertEqual(png_size(os.path.join(out, frames[-1])), (96, 96))
                 uploads = [float(m) for m in re.findall(r"([0-9.]+) MB uploaded", stdout)]
                 self.assertEqual(len(uploads), 4, stdout)
                 # Frame 0 uploads the whole mesh; a points-only rebuild uploads the points.
@@ -49,4 +42,4 @@ class DeformingMeshScript(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main(argv=[sys.argv[0]])  # ctest's -D and -T arguments are not needed here
+    main()

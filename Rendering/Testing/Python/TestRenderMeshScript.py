@@ -11,48 +11,32 @@ a fake clock.
 """
 import io
 import os
-import subprocess
 import sys
 import tempfile
 import unittest
 
 from vtkmodules.vtkFiltersCore import vtkPointDataToCellData
 from vtkmodules.vtkIOExodus import vtkExodusIIWriter
-from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOLegacy import vtkUnstructuredGridWriter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader, vtkXMLUnstructuredGridWriter
+from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+from tiledraycast_testing import (example_script, main, mesh_path, png_size, read_mesh,
+                                  run_without_display, temporary_directory)
 
-SOURCE = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", "..", ".."))
-SCRIPT = os.path.join(SOURCE, "Examples", "Python", "render_mesh.py")
-DATA = None
-TEMP = None
+SCRIPT = example_script("render_mesh.py")
 
 
 def run(*args):
     """Runs the script as a user does; returns (code, stdout, stderr)."""
-    environment = {k: v for k, v in os.environ.items() if k != "DISPLAY"}
     shebang = os.path.realpath("/usr/bin/python3") == os.path.realpath(sys.executable)
     command = [SCRIPT] if shebang else [sys.executable, SCRIPT]
-    result = subprocess.run(command + list(args), capture_output=True, text=True, timeout=600,
-                            env=environment)
-    return result.returncode, result.stdout, result.stderr
-
-
-def png_size(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput().GetDimensions()[:2]
+    return run_without_display(command + list(args))
 
 
 class TestRenderMeshScript(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        reader = vtkXMLUnstructuredGridReader()
-        reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-        reader.Update()
-        cls.grid = reader.GetOutput()
-        cls.directory = tempfile.mkdtemp(prefix="render_mesh_", dir=TEMP)
+        cls.grid = read_mesh("spx_vistrails.vtu")
+        cls.directory = tempfile.mkdtemp(prefix="render_mesh_", dir=temporary_directory())
 
     def path(self, name):
         return os.path.join(self.directory, name)
@@ -119,7 +103,7 @@ class TestRenderMeshScript(unittest.TestCase):
         self.assertIn("--time-step 5 is out of range", err)
 
     def test_bad_input(self):
-        mesh = os.path.join(DATA, "Meshes", "spx_vistrails.vtu")
+        mesh = mesh_path("spx_vistrails.vtu")
         for size in ("0", "-5", "100000", "big"):
             output = self.path("size_%s.png" % size)
             code, out, err = run(mesh, "--size", size, "--output", output)
@@ -168,10 +152,4 @@ class TestRenderMeshScript(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    if "-D" in sys.argv:
-        DATA = sys.argv[sys.argv.index("-D") + 1]
-    else:
-        DATA = os.path.join(SOURCE, "Testing", "Data")
-    if "-T" in sys.argv:
-        TEMP = sys.argv[sys.argv.index("-T") + 1]
-    unittest.main(argv=[sys.argv[0]])
+    main()

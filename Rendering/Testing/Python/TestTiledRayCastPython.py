@@ -6,76 +6,32 @@ C++ scene tests), and reads the statistics and the validation report from Python
 mapper's build progress (ProgressEvent, as any vtkAlgorithm) and that a frame without input
 leaves the statistics saying nothing was rendered.
 """
-import os
-import sys
 import unittest
 
 from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import (
-    vtkImageData,
-    vtkPiecewiseFunction,
-    vtkUnstructuredGrid,
-)
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
 from vtkmodules.vtkFiltersGeneral import vtkMultiBlockDataGroupFilter
-from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-from vtkmodules.vtkRenderingCore import (
-    vtkColorTransferFunction,
-    vtkRenderer,
-    vtkRenderWindow,
-    vtkVolume,
-    vtkVolumeProperty,
-)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL implementations)
 
 from tiledraycast import vtkTetReferenceRenderer, vtkTiledRayCastVolumeMapper
+from tiledraycast_testing import main, mesh_reader, offscreen_window, read_mesh, volume_property
 
-DATA = None
+SPX = "spx_vistrails.vtu"
 SIZE = 160
-
-
-def read_spx():
-    reader = vtkXMLUnstructuredGridReader()
-    reader.SetFileName(os.path.join(DATA, "Meshes", "spx_vistrails.vtu"))
-    reader.Update()
-    return reader
+# Blue to red, opacity 0.05 to 0.6, over the scalar range.
+SPX_COLORS = ((0.0, (0.1, 0.3, 1.0)), (1.0, (1.0, 0.2, 0.1)))
+SPX_OPACITIES = ((0.0, 0.05), (1.0, 0.6))
 
 
 def spx_property(grid):
-    """Blue to red, opacity 0.05 to 0.6, a unit distance of a tenth of the mesh's size."""
-    lo, hi = grid.GetPointData().GetScalars().GetRange()
-    color = vtkColorTransferFunction()
-    color.AddRGBPoint(lo, 0.1, 0.3, 1.0)
-    color.AddRGBPoint(hi, 1.0, 0.2, 0.1)
-    opacity = vtkPiecewiseFunction()
-    opacity.AddPoint(lo, 0.05)
-    opacity.AddPoint(hi, 0.6)
-    prop = vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(0.1 * grid.GetLength())
-    return prop
-
-
-def offscreen_window(mapper, prop, size, multisamples=None):
-    """The volume of `mapper` and `prop` alone in an off-screen window, camera reset."""
-    volume = vtkVolume()
-    volume.SetMapper(mapper)
-    volume.SetProperty(prop)
-    renderer = vtkRenderer()
-    renderer.AddVolume(volume)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    if multisamples is not None:
-        window.SetMultiSamples(multisamples)
-    window.SetSize(size, size)
-    window.AddRenderer(renderer)
-    renderer.ResetCamera()
-    return volume, renderer, window
+    """The ramps above, a unit distance of a tenth of the mesh's size."""
+    return volume_property(grid.GetPointData().GetScalars().GetRange(), SPX_COLORS,
+                           SPX_OPACITIES, 0.1 * grid.GetLength())
 
 
 class TestTiledRayCastPython(unittest.TestCase):
     def test_render_matches_reference(self):
-        grid = read_spx().GetOutput()
+        grid = read_mesh(SPX)
         prop = spx_property(grid)
         mapper = vtkTiledRayCastVolumeMapper()
         mapper.SetInputData(grid)
@@ -138,7 +94,7 @@ class TestTiledRayCastPython(unittest.TestCase):
     def test_composite_input_through_a_pipeline(self):
         """A multiblock from a pipeline (a reader's output port would do the same): rendered
         in one traversal, camera reset from the mapper's bounds, equal to the grid's image."""
-        reader = read_spx()
+        reader = mesh_reader(SPX)
         grid = reader.GetOutput()
         group = vtkMultiBlockDataGroupFilter()
         group.AddInputConnection(reader.GetOutputPort())
@@ -163,13 +119,10 @@ class TestTiledRayCastPython(unittest.TestCase):
         self.assertGreater(max(images[0]), 0)
 
     def test_progress_and_empty_frame(self):
-        grid = read_spx().GetOutput()
-        lo, hi = grid.GetPointData().GetScalars().GetRange()
-        opacity = vtkPiecewiseFunction()
-        opacity.AddPoint(lo, 0.1)
-        opacity.AddPoint(hi, 0.5)
-        prop = vtkVolumeProperty()
-        prop.SetScalarOpacity(opacity)
+        grid = read_mesh(SPX)
+        # Opacity only: VTK's default colour and unit distance.
+        prop = volume_property(grid.GetPointData().GetScalars().GetRange(), None,
+                               ((0.0, 0.1), (1.0, 0.5)))
         mapper = vtkTiledRayCastVolumeMapper()
         mapper.SetInputData(grid)
         progress = []
@@ -210,8 +163,4 @@ class TestTiledRayCastPython(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    if "-D" in sys.argv:
-        DATA = sys.argv[sys.argv.index("-D") + 1]
-    else:
-        DATA = os.path.join(os.path.dirname(__file__), "..", "..", "..", "Testing", "Data")
-    unittest.main(argv=[sys.argv[0]])
+    main()

@@ -11,6 +11,7 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkIdList
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkTetra
 from vtkmodules.vtkFiltersCore import vtkMassProperties
 from vtkmodules.vtkFiltersSources import vtkSphereSource
+from tiledraycast_testing import main
 
 try:
     from tiledraycast.vtkFiltersTetGen import vtkTetGenMesher
@@ -98,4 +99,4 @@ class TestTetGenMesher(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main(argv=[sys.argv[0]])
+    main()
