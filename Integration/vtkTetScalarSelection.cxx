@@ -14,12 +14,14 @@
 #include "vtkColorTransferFunction.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
 #include "vtkVolumeProperty.h"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 
 vtkStandardNewMacro(vtkTetScalarSelection);
@@ -68,6 +70,88 @@ bool HasOwnColorFunction(vtkVolumeProperty* property, int k)
 {
   return property->GetColorChannels(k) == 3;
 }
+}
+
+//------------------------------------------------------------------------------
+vtkTetScalarSelection::~vtkTetScalarSelection()
+{
+  this->SetArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+// As vtkAbstractVolumeMapper: selecting the array already selected is no change.
+void vtkTetScalarSelection::SelectScalarArray(int arrayId)
+{
+  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID && this->ArrayId == arrayId)
+  {
+    return;
+  }
+  this->ArrayId = arrayId;
+  this->ArrayAccessMode = VTK_GET_ARRAY_BY_ID;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTetScalarSelection::SelectScalarArray(const char* arrayName)
+{
+  if (!arrayName ||
+    (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName &&
+      std::strcmp(this->ArrayName, arrayName) == 0))
+  {
+    return;
+  }
+  this->SetArrayName(arrayName);
+  this->ArrayAccessMode = VTK_GET_ARRAY_BY_NAME;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkTetScalarSelection::CopySettings(vtkTetScalarSelection* source)
+{
+  if (!source || source == this)
+  {
+    return;
+  }
+  // Each setter marks the selection modified only when its value changes, so that handing the
+  // same settings along at every render is no change.
+  this->SetScalarMode(source->ScalarMode);
+  this->SetArrayAccessMode(source->ArrayAccessMode);
+  this->SetArrayId(source->ArrayId);
+  this->SetArrayName(source->ArrayName);
+  this->SetVectorMode(source->VectorMode);
+  this->SetVectorComponent(source->VectorComponent);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetScalarSelection::HasSameSettings(vtkTetScalarSelection* other)
+{
+  if (!other)
+  {
+    return false;
+  }
+  const char* name = this->ArrayName ? this->ArrayName : "";
+  const char* otherName = other->ArrayName ? other->ArrayName : "";
+  return this->ScalarMode == other->ScalarMode && this->ArrayAccessMode == other->ArrayAccessMode &&
+    this->ArrayId == other->ArrayId && std::strcmp(name, otherName) == 0 &&
+    this->VectorMode == other->VectorMode && this->VectorComponent == other->VectorComponent;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkTetScalarSelection::GetScalars(vtkDataSet* input, int& cellFlag)
+{
+  if (!input)
+  {
+    return nullptr;
+  }
+  return vtkAbstractMapper::GetScalars(
+    input, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
+}
+
+//------------------------------------------------------------------------------
+void vtkTetScalarSelection::SetVectorModeToResolved()
+{
+  this->SetVectorMode(this->Magnitude ? MAGNITUDE : COMPONENT);
+  this->SetVectorComponent(this->Component);
 }
 
 //------------------------------------------------------------------------------
@@ -126,8 +210,8 @@ bool vtkTetScalarSelection::Resolve(
       source = "the colour transfer function's VectorComponent";
       if (mode != vtkScalarsToColors::MAGNITUDE && mode != vtkScalarsToColors::COMPONENT)
       {
-        text << "the colour transfer function's VectorMode is RGBCOLORS (colours read from "
-             << name << "), which this mapper does not render: choose MAGNITUDE or COMPONENT";
+        text << "the colour transfer function's VectorMode is RGBCOLORS (colours read from " << name
+             << "), which this mapper does not render: choose MAGNITUDE or COMPONENT";
         this->ErrorMessage = text.str();
         return false;
       }
@@ -162,6 +246,10 @@ void vtkTetScalarSelection::Extract(vtkDataArray* array, bool magnitude, int com
 void vtkTetScalarSelection::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
+  os << indent << "ArrayAccessMode: " << this->ArrayAccessMode << "\n";
+  os << indent << "ArrayId: " << this->ArrayId << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
   os << indent << "VectorMode: "
      << (this->VectorMode == DEFAULT ? "Default"
                                      : (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component"))

@@ -26,6 +26,7 @@ vtkAbstractObjectFactoryNewMacro(vtkTiledRayCastVolumeMapper);
 vtkTiledRayCastVolumeMapper::vtkTiledRayCastVolumeMapper()
   : Statistics(vtkTiledRayCastStatistics::New())
   , ValidationReport(vtkTetMeshValidationReport::New())
+  , ScalarSelection(vtkTetScalarSelection::New())
 {
 }
 
@@ -34,6 +35,47 @@ vtkTiledRayCastVolumeMapper::~vtkTiledRayCastVolumeMapper()
 {
   this->Statistics->Delete();
   this->ValidationReport->Delete();
+  this->ScalarSelection->Delete();
+}
+
+//------------------------------------------------------------------------------
+// VectorMode and VectorComponent live in the scalar selection; a change to either is a change to
+// the mapper, as for its other settings (and only a change: ParaView sets them at every update).
+void vtkTiledRayCastVolumeMapper::SetVectorMode(int mode)
+{
+  const vtkMTimeType before = this->ScalarSelection->GetMTime();
+  this->ScalarSelection->SetVectorMode(mode);
+  if (this->ScalarSelection->GetMTime() != before)
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeMapper::SetVectorComponent(int component)
+{
+  const vtkMTimeType before = this->ScalarSelection->GetMTime();
+  this->ScalarSelection->SetVectorComponent(component);
+  if (this->ScalarSelection->GetMTime() != before)
+  {
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkTetScalarSelection* vtkTiledRayCastVolumeMapper::GetScalarSelection()
+{
+  // vtkAbstractVolumeMapper holds the array settings (its setters, and its subclasses, write
+  // its members): copied in here rather than mirrored as they are set, so that they are kept
+  // in one place and the object handed along is never stale. The copy changes the selection's
+  // modification time, never the mapper's, which counts only what its users set: the mapper's
+  // own GetMTime() leaves the selection out.
+  vtkTetScalarSelection* selection = this->ScalarSelection;
+  selection->SetScalarMode(this->ScalarMode);
+  selection->SetArrayAccessMode(this->ArrayAccessMode);
+  selection->SetArrayId(this->ArrayId);
+  selection->SetArrayName(this->ArrayName);
+  return selection;
 }
 
 //------------------------------------------------------------------------------
@@ -153,11 +195,6 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
-  os << indent << "VectorMode: "
-     << (this->VectorMode == DEFAULT ? "Default"
-                                     : (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component"))
-     << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
   os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";
   os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize << "\n";
   os << indent << "SynchronousStatistics: " << this->SynchronousStatistics << "\n";
@@ -165,4 +202,6 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Statistics->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ValidationReport:\n";
   this->ValidationReport->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "ScalarSelection:\n";
+  this->GetScalarSelection()->PrintSelf(os, indent.GetNextIndent());
 }

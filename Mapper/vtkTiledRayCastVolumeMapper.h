@@ -54,6 +54,7 @@
 #ifndef vtkTiledRayCastVolumeMapper_h
 #define vtkTiledRayCastVolumeMapper_h
 
+#include "vtkTetScalarSelection.h"       // For VectorModes and the inline forwarders
 #include "vtkTiledRayCastMapperModule.h" // For export macro
 #include "vtkUnstructuredGridVolumeMapper.h"
 #include "vtkVolumeMapper.h" // For the blend modes' values
@@ -351,22 +352,32 @@ public:
    * function. MAGNITUDE or COMPONENT (with VectorComponent) set here override the colour
    * function. Several components are never blended: dependent components
    * (IndependentComponentsOff with more than one component) and transfer functions set for
-   * components other than the first are refused with an error, and nothing is drawn.
+   * components other than the first are refused with an error, and nothing is drawn. The
+   * values are vtkTetScalarSelection's, which holds them (see GetScalarSelection()).
    */
   enum VectorModes
   {
-    DEFAULT = -1,
-    MAGNITUDE = 0,
-    COMPONENT = 1
+    DEFAULT = vtkTetScalarSelection::DEFAULT,
+    MAGNITUDE = vtkTetScalarSelection::MAGNITUDE,
+    COMPONENT = vtkTetScalarSelection::COMPONENT
   };
-  vtkSetClampMacro(VectorMode, int, DEFAULT, COMPONENT);
-  vtkGetMacro(VectorMode, int);
+  void SetVectorMode(int mode);
+  int GetVectorMode() { return this->ScalarSelection->GetVectorMode(); }
   void SetVectorModeToDefault() { this->SetVectorMode(DEFAULT); }
   void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
   void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
-  vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
-  vtkGetMacro(VectorComponent, int);
+  void SetVectorComponent(int component);
+  int GetVectorComponent() { return this->ScalarSelection->GetVectorComponent(); }
   ///@}
+
+  /**
+   * The mapper's whole scalar selection as one object, to hand along in one call
+   * (vtkTetScalarSelection::CopySettings()): ScalarMode, ArrayAccessMode, ArrayId and ArrayName,
+   * which vtkAbstractVolumeMapper holds and which are copied in at each call, and VectorMode and
+   * VectorComponent, which it holds itself. Set them through the mapper's own setters: those
+   * mark the mapper modified, a change made on the object returned does not.
+   */
+  vtkTetScalarSelection* GetScalarSelection();
 
   ///@{
   /**
@@ -464,8 +475,6 @@ protected:
   vtkTypeBool AutoAdjustSampleDistances = 1;
   double AverageIPScalarRange[2] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MAX };
   int MaximumNumberOfPassesPerLayer = 1000000;
-  int VectorMode = DEFAULT;
-  int VectorComponent = 0;
   vtkIdType MaximumTextureBufferSize = 0;
   int MaximumTextureSize = 0;
   int PreIntegrationTableScalarSize = 0;
@@ -474,6 +483,7 @@ protected:
 
   vtkTiledRayCastStatistics* Statistics;
   vtkTetMeshValidationReport* ValidationReport;
+  vtkTetScalarSelection* ScalarSelection;
 
 private:
   vtkTiledRayCastVolumeMapper(const vtkTiledRayCastVolumeMapper&) = delete;

@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTetMeshBlockMerger.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkCompositeDataIterator.h"
@@ -49,8 +48,8 @@ struct Block
   int Component;
   bool operator==(const Block& o) const
   {
-    return Data == o.Data && MTime == o.MTime && Scalars == o.Scalars &&
-      Magnitude == o.Magnitude && Component == o.Component;
+    return Data == o.Data && MTime == o.MTime && Scalars == o.Scalars && Magnitude == o.Magnitude &&
+      Component == o.Component;
   }
 };
 
@@ -107,9 +106,7 @@ bool vtkTetMeshBlockMerger::vtkInternals::Collect(vtkTetMeshBlockMerger* self,
   vtkIdType index = 0;
   self->NumberOfBlocks = self->NumberOfEmptyBlocks = 0;
   cellFlag = -1;
-  vtkNew<vtkTetScalarSelection> selection;
-  selection->SetVectorMode(self->VectorMode);
-  selection->SetVectorComponent(self->VectorComponent);
+  vtkTetScalarSelection* selection = self->ScalarSelection;
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem(), ++index)
   {
     ++self->NumberOfBlocks;
@@ -130,8 +127,7 @@ bool vtkTetMeshBlockMerger::vtkInternals::Collect(vtkTetMeshBlockMerger* self,
       continue;
     }
     int flag = -1;
-    vtkDataArray* scalars = vtkAbstractMapper::GetScalars(data, self->ScalarMode,
-      self->ArrayAccessMode, self->ArrayId, self->ArrayName, flag);
+    vtkDataArray* scalars = selection->GetScalars(data, flag);
     if (!scalars || (flag != 0 && flag != 1))
     {
       text << " has no point or cell scalars to render (check the scalar mode and the selected "
@@ -153,8 +149,8 @@ bool vtkTetMeshBlockMerger::vtkInternals::Collect(vtkTetMeshBlockMerger* self,
       this->Error = text.str();
       return false;
     }
-    blocks.push_back({ data, data->GetMTime(), scalars, selection->GetMagnitude(),
-      selection->GetComponent() });
+    blocks.push_back(
+      { data, data->GetMTime(), scalars, selection->GetMagnitude(), selection->GetComponent() });
   }
   if (blocks.empty())
   {
@@ -255,17 +251,12 @@ void vtkTetMeshBlockMerger::vtkInternals::Build(
 
 //------------------------------------------------------------------------------
 vtkTetMeshBlockMerger::vtkTetMeshBlockMerger()
-  : ScalarMode(VTK_SCALAR_MODE_DEFAULT)
-  , ArrayAccessMode(VTK_GET_ARRAY_BY_ID)
-  , Internals(new vtkInternals)
+  : Internals(new vtkInternals)
 {
 }
 
 //------------------------------------------------------------------------------
-vtkTetMeshBlockMerger::~vtkTetMeshBlockMerger()
-{
-  this->SetArrayName(nullptr);
-}
+vtkTetMeshBlockMerger::~vtkTetMeshBlockMerger() = default;
 
 //------------------------------------------------------------------------------
 vtkUnstructuredGrid* vtkTetMeshBlockMerger::Merge(
@@ -324,12 +315,8 @@ const char* vtkTetMeshBlockMerger::GetErrorMessage()
 void vtkTetMeshBlockMerger::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
-  os << indent << "ArrayAccessMode: " << this->ArrayAccessMode << "\n";
-  os << indent << "ArrayId: " << this->ArrayId << "\n";
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
-  os << indent << "VectorMode: " << this->VectorMode << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "ScalarSelection:\n";
+  this->ScalarSelection->PrintSelf(os, indent.GetNextIndent());
   os << indent << "NumberOfBlocks: " << this->NumberOfBlocks << "\n";
   os << indent << "NumberOfEmptyBlocks: " << this->NumberOfEmptyBlocks << "\n";
   os << indent << "NumberOfSharedPoints: " << this->NumberOfSharedPoints << "\n";

@@ -17,9 +17,10 @@
  * leaf, in the tree's traversal order, into one vtkUnstructuredGrid holding one scalar per point
  * or cell, which the mesh builder then takes like any grid.
  *
- * - Each block's scalars are selected on their own, with the mapper's settings (ScalarMode,
- *   ArrayAccessMode, ArrayId/ArrayName: by name, each block's own array of that name), and
- *   reduced to one scalar by vtkTetScalarSelection with the volume property, per block. The
+ * - Each block's scalars are selected on their own by the scalar selection (GetScalarSelection(),
+ *   the mapper's settings: ScalarMode, ArrayAccessMode, ArrayId/ArrayName: by name, each
+ *   block's own array of that name), and reduced to one scalar by its rule with the volume
+ *   property, per block. The
  *   merged array (one component, double, named after the first block's array) is the grid's
  *   active point or cell scalars; every block must have its scalars in the same association
  *   (all point data or all cell data).
@@ -43,7 +44,9 @@
 #ifndef vtkTetMeshBlockMerger_h
 #define vtkTetMeshBlockMerger_h
 
+#include "vtkNew.h" // For vtkNew
 #include "vtkObject.h"
+#include "vtkTetScalarSelection.h"     // For vtkNew<vtkTetScalarSelection>
 #include "vtkTiledRayCastMeshModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
@@ -59,24 +62,11 @@ public:
   vtkTypeMacro(vtkTetMeshBlockMerger, vtkObject);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
   /**
-   * Scalar selection, as vtkAbstractMapper (applied to each block) and vtkTetScalarSelection
-   * (VectorMode DEFAULT follows the property's colour function).
+   * The scalar selection, applied to each block (VectorMode DEFAULT, the default, follows the
+   * property's colour function). Never null.
    */
-  vtkSetMacro(ScalarMode, int);
-  vtkGetMacro(ScalarMode, int);
-  vtkSetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayAccessMode, int);
-  vtkSetMacro(ArrayId, int);
-  vtkGetMacro(ArrayId, int);
-  vtkSetStringMacro(ArrayName);
-  vtkGetStringMacro(ArrayName);
-  vtkSetMacro(VectorMode, int);
-  vtkGetMacro(VectorMode, int);
-  vtkSetMacro(VectorComponent, int);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
+  vtkTetScalarSelection* GetScalarSelection() { return this->ScalarSelection; }
 
   /**
    * The merged grid of `input` for `property` (which may be null), or null with
@@ -103,12 +93,7 @@ protected:
   vtkTetMeshBlockMerger();
   ~vtkTetMeshBlockMerger() override;
 
-  int ScalarMode;
-  int ArrayAccessMode;
-  int ArrayId = -1;
-  char* ArrayName = nullptr;
-  int VectorMode = -1;
-  int VectorComponent = 0;
+  vtkNew<vtkTetScalarSelection> ScalarSelection;
   vtkIdType NumberOfBlocks = 0;
   vtkIdType NumberOfEmptyBlocks = 0;
   vtkIdType NumberOfSharedPoints = 0;

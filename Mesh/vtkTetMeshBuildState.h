@@ -29,11 +29,12 @@
 #ifndef vtkTetMeshBuildState_h
 #define vtkTetMeshBuildState_h
 
-#include "vtkNew.h"      // For vtkNew
-#include "vtkSMPTools.h" // For vtkSMPTools::For in ForBlocks
-#include "vtkTetMesh.h"  // For vtkTetMesh
-#include "vtkTimerLog.h" // For vtkTimerLog in ScopedEvent
-#include "vtkType.h"     // For vtkIdType, vtkMTimeType
+#include "vtkNew.h"                // For vtkNew
+#include "vtkSMPTools.h"           // For vtkSMPTools::For in ForBlocks
+#include "vtkTetMesh.h"            // For vtkTetMesh
+#include "vtkTetScalarSelection.h" // For vtkNew<vtkTetScalarSelection>
+#include "vtkTimerLog.h"           // For vtkTimerLog in ScopedEvent
+#include "vtkType.h"               // For vtkIdType, vtkMTimeType
 
 #include <algorithm> // For std::min, std::max
 #include <cstdint>   // For uint32_t
@@ -99,12 +100,7 @@ public:
   // Settings the mesh was built with.
   bool SpatialOrdering = false;
   double DegeneracyTolerance = 0.0;
-  int ScalarMode = 0;
-  int ArrayAccessMode = 0;
-  int ArrayId = -1;
-  std::string ArrayName;
-  int VectorMode = 0;
-  int VectorComponent = 0;
+  vtkNew<vtkTetScalarSelection> ScalarSettings; // the scalar selection's settings, copied
 
   // Why the mesh cannot be used, kept across partial rebuilds: a topology error stands until
   // the next full build, a scalar error until the next scalar read.

@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTetMeshBuilder.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -27,7 +26,6 @@
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTimerLog.h"
 
-#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -56,43 +54,15 @@ void ReportProgress(vtkObject* builder, double fraction)
 
 //------------------------------------------------------------------------------
 vtkTetMeshBuilder::vtkTetMeshBuilder()
-  : ScalarMode(VTK_SCALAR_MODE_DEFAULT)
-  , ArrayAccessMode(VTK_GET_ARRAY_BY_ID)
-  , State(new vtkTetMeshBuildState)
+  : State(new vtkTetMeshBuildState)
 {
+  // The builder sees no volume property: what it reads is a component or the magnitude, as a
+  // mapper resolved it (vtkTetScalarSelection::SetVectorModeToResolved()).
+  this->ScalarSelection->SetVectorModeToComponent();
 }
 
 //------------------------------------------------------------------------------
-vtkTetMeshBuilder::~vtkTetMeshBuilder()
-{
-  this->SetArrayName(nullptr);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetMeshBuilder::SelectScalarArray(int arrayId)
-{
-  if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID && this->ArrayId == arrayId)
-  {
-    return;
-  }
-  this->ArrayId = arrayId;
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_ID;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-void vtkTetMeshBuilder::SelectScalarArray(const char* arrayName)
-{
-  if (!arrayName ||
-    (this->ArrayAccessMode == VTK_GET_ARRAY_BY_NAME && this->ArrayName &&
-      std::strcmp(this->ArrayName, arrayName) == 0))
-  {
-    return;
-  }
-  this->SetArrayName(arrayName);
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_NAME;
-  this->Modified();
-}
+vtkTetMeshBuilder::~vtkTetMeshBuilder() = default;
 
 //------------------------------------------------------------------------------
 vtkTetMesh* vtkTetMeshBuilder::GetMesh()
@@ -148,21 +118,16 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   std::vector<Stamp> topology;
   vtkTetMeshBuildState::GetTopologyStamps(input, topology);
   const Stamp pointsStamp = vtkTetMeshBuildState::GetPointsStamp(input);
-  const std::string arrayName = this->ArrayName ? this->ArrayName : "";
   int cellFlag = -1;
-  vtkDataArray* scalars = input ? vtkAbstractMapper::GetScalars(input, this->ScalarMode,
-                                    this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag)
-                                : nullptr;
+  vtkDataArray* scalars = this->ScalarSelection->GetScalars(input, cellFlag);
   const bool full = !state.Valid || state.Input != input || state.TopologyStamps != topology ||
     state.NumberOfPoints != (input ? input->GetNumberOfPoints() : -1) ||
     state.SpatialOrdering != this->SpatialOrdering ||
     state.DegeneracyTolerance != this->DegeneracyTolerance;
   const bool pointsChanged = full || state.PointsStamp != pointsStamp;
   bool scalarsChanged = full || state.ScalarsStamp != vtkTetMeshBuildState::MakeStamp(scalars) ||
-    state.ScalarsCellFlag != (scalars ? cellFlag : -1) || state.ScalarMode != this->ScalarMode ||
-    state.ArrayAccessMode != this->ArrayAccessMode || state.ArrayId != this->ArrayId ||
-    state.ArrayName != arrayName || state.VectorMode != this->VectorMode ||
-    state.VectorComponent != this->VectorComponent;
+    state.ScalarsCellFlag != (scalars ? cellFlag : -1) ||
+    !state.ScalarSettings->HasSameSettings(this->ScalarSelection);
   if (!pointsChanged && !scalarsChanged)
   {
     this->LastBuildTime = vtkTimerLog::GetUniversalTime() - start;
@@ -191,7 +156,6 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   if (scalarsChanged)
   {
     this->UpdateScalars(input);
-    state.ArrayName = arrayName;
     // ReadScalars records the array it used; keep the one the change test sees otherwise.
     if (!state.TopologyError.empty() || !state.ScalarError.empty())
     {
@@ -376,18 +340,14 @@ void vtkTetMeshBuilder::UpdateScalars(vtkDataSet* input)
   {
     ScopedEvent event("vtkTetMeshBuilder: scalars");
     std::string error;
-    if (!vtkTetMeshScalarExtraction::ReadScalars(state, input, this, error))
+    if (!vtkTetMeshScalarExtraction::ReadScalars(state, input, this->ScalarSelection, error))
     {
       state.ScalarError = error;
       vtkErrorMacro(<< "Cannot render the grid: " << error << ".");
     }
     vtkTetMeshScalarExtraction::FlagNonFiniteTets(state);
   }
-  state.ScalarMode = this->ScalarMode;
-  state.ArrayAccessMode = this->ArrayAccessMode;
-  state.ArrayId = this->ArrayId;
-  state.VectorMode = this->VectorMode;
-  state.VectorComponent = this->VectorComponent;
+  state.ScalarSettings->CopySettings(this->ScalarSelection);
   this->LastRebuild |= RebuildScalars;
   state.Mesh->ScalarsTime.Modified();
 }
@@ -426,13 +386,8 @@ void vtkTetMeshBuilder::FinishReport(vtkDataSet* input)
 void vtkTetMeshBuilder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
-  os << indent << "ArrayAccessMode: " << this->ArrayAccessMode << "\n";
-  os << indent << "ArrayId: " << this->ArrayId << "\n";
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
-  os << indent << "VectorMode: " << (this->VectorMode == Magnitude ? "Magnitude" : "Component")
-     << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "ScalarSelection:\n";
+  this->ScalarSelection->PrintSelf(os, indent.GetNextIndent());
   os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
   os << indent << "DegeneracyTolerance: " << this->DegeneracyTolerance << "\n";
   os << indent << "LastRebuild: " << GetRebuildAsString(this->LastRebuild) << "\n";

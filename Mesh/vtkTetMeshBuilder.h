@@ -12,8 +12,9 @@
  * @class   vtkTetMeshBuilder
  * @brief   builds a vtkTetMesh (tetrahedra, face adjacency, scalars, report) from a vtkDataSet
  *
- * Usage: set the scalar selection (the same settings as a volume mapper, so that a mapper can
- * forward its own), then call Build(input) whenever the input may have changed. Build()
+ * Usage: set the scalar selection (GetScalarSelection(): the settings of a volume mapper, so
+ * that a mapper hands its own along with vtkTetScalarSelection::CopySettings()), then call
+ * Build(input) whenever the input may have changed. Build()
  * returns the builder's mesh (always the same object, never null) and does only the work that
  * the change requires:
  *
@@ -48,9 +49,12 @@
  * An empty input, an input without 3D cells or without the selected scalars is reported
  * unusable (an error, and GetReport()->GetUsable() false); nothing crashes.
  *
- * Scalars: chosen with vtkAbstractMapper::GetScalars (ScalarMode, ArrayAccessMode, ArrayId,
- * ArrayName); any numeric type; a multi-component array is reduced to one component
- * (VectorMode Component with VectorComponent) or to its magnitude (VectorMode Magnitude).
+ * Scalars: chosen by the scalar selection (vtkTetScalarSelection: ScalarMode, ArrayAccessMode,
+ * ArrayId, ArrayName, as vtkAbstractMapper::GetScalars); any numeric type; a multi-component
+ * array is reduced to one component (VectorMode COMPONENT, the builder's default, with
+ * VectorComponent) or to its magnitude (VectorMode MAGNITUDE). The builder sees no volume
+ * property: VectorMode DEFAULT takes component 0, and a mapper resolves its selection with the
+ * property first (vtkTetScalarSelection::SetVectorModeToResolved()).
  *
  * Validation (into the mesh's vtkTetMeshValidationReport): inverted tetrahedra (reoriented),
  * degenerate tetrahedra (6|V| <= DegeneracyTolerance * longest edge^3; kept, never
@@ -76,8 +80,9 @@
 #ifndef vtkTetMeshBuilder_h
 #define vtkTetMeshBuilder_h
 
-#include "vtkAbstractMapper.h" // For VTK_SCALAR_MODE_* and VTK_GET_ARRAY_BY_*
+#include "vtkNew.h" // For vtkNew
 #include "vtkObject.h"
+#include "vtkTetScalarSelection.h"     // For vtkNew<vtkTetScalarSelection>
 #include "vtkTiledRayCastMeshModule.h" // For export macro
 
 #include <memory> // For std::unique_ptr
@@ -96,15 +101,6 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /**
-   * How a multi-component scalar array becomes one value (values as vtkScalarsToColors).
-   */
-  enum VectorModes
-  {
-    Magnitude = 0,
-    Component = 1
-  };
-
-  /**
    * What the last Build() rebuilt: a combination of these bits. RebuildAll = all three.
    */
   enum RebuildFlags
@@ -116,37 +112,12 @@ public:
     RebuildAll = 7
   };
 
-  ///@{
   /**
-   * Scalar selection, as vtkAbstractMapper/vtkUnstructuredGridVolumeMapper: ScalarMode is one
-   * of VTK_SCALAR_MODE_* (default VTK_SCALAR_MODE_DEFAULT: point scalars, else cell scalars),
-   * ArrayAccessMode VTK_GET_ARRAY_BY_ID or VTK_GET_ARRAY_BY_NAME, used with the
-   * USE_POINT_FIELD_DATA / USE_CELL_FIELD_DATA modes.
+   * Which scalars to read and how a multi-component array becomes one value (see above).
+   * Defaults: VTK_SCALAR_MODE_DEFAULT (point scalars, else cell scalars), VectorMode COMPONENT,
+   * component 0. Never null; a change to it is seen at the next Build().
    */
-  vtkSetMacro(ScalarMode, int);
-  vtkGetMacro(ScalarMode, int);
-  vtkSetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayAccessMode, int);
-  vtkSetMacro(ArrayId, int);
-  vtkGetMacro(ArrayId, int);
-  vtkSetStringMacro(ArrayName);
-  vtkGetStringMacro(ArrayName);
-  void SelectScalarArray(int arrayId);
-  void SelectScalarArray(const char* arrayName);
-  ///@}
-
-  ///@{
-  /**
-   * Multi-component arrays: VectorMode Component (default) takes component VectorComponent
-   * (default 0); Magnitude takes the Euclidean norm of the tuple.
-   */
-  vtkSetClampMacro(VectorMode, int, Magnitude, Component);
-  vtkGetMacro(VectorMode, int);
-  void SetVectorModeToMagnitude() { this->SetVectorMode(Magnitude); }
-  void SetVectorModeToComponent() { this->SetVectorMode(Component); }
-  vtkSetClampMacro(VectorComponent, int, 0, VTK_INT_MAX);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
+  vtkTetScalarSelection* GetScalarSelection() { return this->ScalarSelection; }
 
   ///@{
   /**
@@ -209,12 +180,7 @@ protected:
   vtkTetMeshBuilder();
   ~vtkTetMeshBuilder() override;
 
-  int ScalarMode;
-  int ArrayAccessMode;
-  int ArrayId = -1;
-  char* ArrayName = nullptr;
-  int VectorMode = Component;
-  int VectorComponent = 0;
+  vtkNew<vtkTetScalarSelection> ScalarSelection;
   bool SpatialOrdering = false;
   double DegeneracyTolerance = 1e-12;
 

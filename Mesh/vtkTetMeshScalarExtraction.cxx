@@ -10,13 +10,11 @@
 =========================================================================*/
 #include "vtkTetMeshScalarExtraction.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkSMPTools.h"
 #include "vtkTetMesh.h"
 #include "vtkTetMeshBuildState.h"
-#include "vtkTetMeshBuilder.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTetScalarSelection.h"
 
@@ -26,8 +24,8 @@
 #include <vector>
 
 //------------------------------------------------------------------------------
-bool vtkTetMeshScalarExtraction::ReadScalars(
-  vtkTetMeshBuildState& state, vtkDataSet* input, vtkTetMeshBuilder* builder, std::string& error)
+bool vtkTetMeshScalarExtraction::ReadScalars(vtkTetMeshBuildState& state, vtkDataSet* input,
+  vtkTetScalarSelection* selection, std::string& error)
 {
   vtkTetMesh* mesh = state.Mesh;
   mesh->PointScalars.clear();
@@ -40,11 +38,10 @@ bool vtkTetMeshScalarExtraction::ReadScalars(
   state.ScalarsCellFlag = -1;
 
   int cellFlag = -1;
-  vtkDataArray* array = vtkAbstractMapper::GetScalars(input, builder->GetScalarMode(),
-    builder->GetArrayAccessMode(), builder->GetArrayId(), builder->GetArrayName(), cellFlag);
+  vtkDataArray* array = selection->GetScalars(input, cellFlag);
   if (!array)
   {
-    error = DescribeMissingScalars(builder);
+    error = DescribeMissingScalars(selection);
     return false;
   }
   if (cellFlag != 0 && cellFlag != 1)
@@ -53,10 +50,12 @@ bool vtkTetMeshScalarExtraction::ReadScalars(
     return false;
   }
   const vtkIdType expected = cellFlag == 0 ? input->GetNumberOfPoints() : input->GetNumberOfCells();
-  const int numComponents = array->GetNumberOfComponents();
-  const bool magnitude =
-    builder->GetVectorMode() == vtkTetMeshBuilder::Magnitude && numComponents > 1;
-  const int component = numComponents > 1 ? builder->GetVectorComponent() : 0;
+  // The rule without a property refuses only a component beyond the array's, which CheckArray
+  // words as the mesh builder always has (after the count of values, which it checks first).
+  const bool resolved =
+    selection->Resolve(array->GetNumberOfComponents(), array->GetName(), nullptr);
+  const bool magnitude = resolved && selection->GetMagnitude();
+  const int component = resolved ? selection->GetComponent() : selection->GetVectorComponent();
   if (!CheckArray(array, expected, cellFlag, magnitude, component, error))
   {
     return false;
@@ -72,25 +71,25 @@ bool vtkTetMeshScalarExtraction::ReadScalars(
 }
 
 //------------------------------------------------------------------------------
-std::string vtkTetMeshScalarExtraction::DescribeMissingScalars(vtkTetMeshBuilder* builder)
+std::string vtkTetMeshScalarExtraction::DescribeMissingScalars(vtkTetScalarSelection* selection)
 {
-  const int scalarMode = builder->GetScalarMode();
+  const int scalarMode = selection->GetScalarMode();
   std::ostringstream text;
   text << "no scalars to render: ";
   if (scalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
     scalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA ||
     scalarMode == VTK_SCALAR_MODE_USE_FIELD_DATA)
   {
-    const bool byName = builder->GetArrayAccessMode() == VTK_GET_ARRAY_BY_NAME;
+    const bool byName = selection->GetArrayAccessMode() == VTK_GET_ARRAY_BY_NAME;
     text << "the " << (scalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ? "point" : "cell")
          << " data has no numeric array ";
     if (byName)
     {
-      text << "named \"" << (builder->GetArrayName() ? builder->GetArrayName() : "") << "\"";
+      text << "named \"" << (selection->GetArrayName() ? selection->GetArrayName() : "") << "\"";
     }
     else
     {
-      text << "with index " << builder->GetArrayId();
+      text << "with index " << selection->GetArrayId();
     }
   }
   else

@@ -28,17 +28,18 @@
 class vtkDataArray;
 class vtkDataSet;
 class vtkTetMeshBuildState;
-class vtkTetMeshBuilder;
+class vtkTetScalarSelection;
 
 class vtkTetMeshScalarExtraction
 {
 public:
   /**
-   * The scalars `builder`'s settings select from `input`, into the mesh. False (and `error`)
-   * when there are none, or they do not fit the grid or the settings.
+   * The scalars `selection` selects from `input` (the builder's: no volume property), into
+   * the mesh. False (and `error`) when there are none, or they do not fit the grid or the
+   * settings.
    */
-  static bool ReadScalars(
-    vtkTetMeshBuildState& state, vtkDataSet* input, vtkTetMeshBuilder* builder, std::string& error);
+  static bool ReadScalars(vtkTetMeshBuildState& state, vtkDataSet* input,
+    vtkTetScalarSelection* selection, std::string& error);
 
   /**
    * Set or clear vtkTetMesh::NonFiniteScalars on every tetrahedron.
@@ -46,7 +47,7 @@ public:
   static void FlagNonFiniteTets(vtkTetMeshBuildState& state);
 
 private:
-  static std::string DescribeMissingScalars(vtkTetMeshBuilder* builder);
+  static std::string DescribeMissingScalars(vtkTetScalarSelection* selection);
   static bool CheckArray(vtkDataArray* array, vtkIdType expected, int cellFlag, bool magnitude,
     int component, std::string& error);
   static void StoreValues(vtkTetMeshBuildState& state, int cellFlag);

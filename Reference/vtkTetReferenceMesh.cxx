@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTetReferenceMesh.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
@@ -90,14 +89,14 @@ public:
 
 //------------------------------------------------------------------------------
 bool vtkTetReferenceMesh::IsPreparedFrom(
-  vtkDataSet* input, const ScalarSettings& settings, const double matrix[16]) const
+  vtkDataSet* input, vtkTetScalarSelection* selection, const double matrix[16]) const
 {
   return this->Valid && this->Input == input && this->InputMTime == input->GetMTime() &&
-    this->Settings == settings && std::equal(matrix, matrix + 16, this->Matrix);
+    this->Selection->HasSameSettings(selection) && std::equal(matrix, matrix + 16, this->Matrix);
 }
 
 //------------------------------------------------------------------------------
-bool vtkTetReferenceMesh::Prepare(vtkDataSet* input, const ScalarSettings& settings,
+bool vtkTetReferenceMesh::Prepare(vtkDataSet* input, vtkTetScalarSelection* selection,
   const double matrix[16], vtkIdType& degenerate, std::string& error)
 {
   this->Valid = false;
@@ -105,9 +104,7 @@ bool vtkTetReferenceMesh::Prepare(vtkDataSet* input, const ScalarSettings& setti
 
   // Scalars, reduced to one component.
   int cellFlag = -1;
-  vtkDataArray* array =
-    vtkAbstractMapper::GetScalars(input, settings.ScalarMode, settings.ArrayAccessMode,
-      settings.ArrayId, settings.ArrayNameSet ? settings.ArrayName.c_str() : nullptr, cellFlag);
+  vtkDataArray* array = selection->GetScalars(input, cellFlag);
   if (!array || array->GetNumberOfTuples() == 0)
   {
     error = "No scalars to render (check the scalar mode and the selected array).";
@@ -122,8 +119,9 @@ bool vtkTetReferenceMesh::Prepare(vtkDataSet* input, const ScalarSettings& setti
   staging.CellScalars = cellFlag == 1;
   staging.Reduced->SetName(CarriedScalarsName);
   staging.Reduced->SetNumberOfTuples(array->GetNumberOfTuples());
-  vtkTetScalarSelection::Extract(
-    array, settings.Magnitude, settings.Component, staging.Reduced->GetPointer(0));
+  vtkTetScalarSelection::Extract(array,
+    selection->GetVectorMode() == vtkTetScalarSelection::MAGNITUDE, selection->GetVectorComponent(),
+    staging.Reduced->GetPointer(0));
 
   if (!this->CollectTetrahedra(staging, input, error) ||
     !this->TransformPoints(staging, matrix, error))
@@ -147,7 +145,8 @@ bool vtkTetReferenceMesh::Prepare(vtkDataSet* input, const ScalarSettings& setti
 
   this->Input = input;
   this->InputMTime = input->GetMTime();
-  this->Settings = settings;
+  this->Selection = vtkSmartPointer<vtkTetScalarSelection>::New();
+  this->Selection->CopySettings(selection);
   std::copy(matrix, matrix + 16, this->Matrix);
   this->Valid = true;
   return true;

@@ -24,8 +24,10 @@
 #ifndef vtkTetReferenceMesh_h
 #define vtkTetReferenceMesh_h
 
-#include "vtkTetReferenceBVH.h" // For vtkTetReferenceBVH::Node
-#include "vtkType.h"            // For vtkIdType, vtkMTimeType
+#include "vtkSmartPointer.h"       // For vtkSmartPointer
+#include "vtkTetReferenceBVH.h"    // For vtkTetReferenceBVH::Node
+#include "vtkTetScalarSelection.h" // For vtkSmartPointer<vtkTetScalarSelection>
+#include "vtkType.h"               // For vtkIdType, vtkMTimeType
 
 #include <string> // For std::string
 #include <vector> // For std::vector
@@ -37,38 +39,20 @@ class vtkTetReferenceMesh
 {
 public:
   /**
-   * Which scalars to take from the input (vtkAbstractMapper::GetScalars's arguments) and how to
-   * reduce them to one value (vtkTetScalarSelection).
+   * Prepare the mesh from `input` (points through the 4x4 `matrix`), its scalars read by
+   * `selection`, resolved (vtkTetScalarSelection::SetVectorModeToResolved(): the array, and a
+   * component or the magnitude). False (and `error`) when nothing can be rendered;
+   * `degenerate` counts the tetrahedra dropped.
    */
-  struct ScalarSettings
-  {
-    int ScalarMode = -1;
-    int ArrayAccessMode = -1;
-    int ArrayId = -1;
-    std::string ArrayName;
-    bool ArrayNameSet = false; // a null name reads as "" above, yet is passed on as null
-    bool Magnitude = false;
-    int Component = 0;
-    bool operator==(const ScalarSettings& o) const
-    {
-      return this->ScalarMode == o.ScalarMode && this->ArrayAccessMode == o.ArrayAccessMode &&
-        this->ArrayId == o.ArrayId && this->ArrayName == o.ArrayName &&
-        this->Magnitude == o.Magnitude && this->Component == o.Component;
-    }
-  };
-
-  /**
-   * Prepare the mesh from `input` (points through the 4x4 `matrix`). False (and `error`) when
-   * nothing can be rendered; `degenerate` counts the tetrahedra dropped.
-   */
-  bool Prepare(vtkDataSet* input, const ScalarSettings& settings, const double matrix[16],
+  bool Prepare(vtkDataSet* input, vtkTetScalarSelection* selection, const double matrix[16],
     vtkIdType& degenerate, std::string& error);
 
   /**
-   * Whether the mesh was prepared from this input (unmodified since), these settings and matrix.
+   * Whether the mesh was prepared from this input (unmodified since), the same settings of a
+   * resolved selection, and this matrix.
    */
   bool IsPreparedFrom(
-    vtkDataSet* input, const ScalarSettings& settings, const double matrix[16]) const;
+    vtkDataSet* input, vtkTetScalarSelection* selection, const double matrix[16]) const;
 
   // The prepared mesh, in world coordinates minus Center, tetrahedra in hierarchy order.
   std::vector<double> Points;
@@ -85,7 +69,9 @@ private:
   bool Valid = false;
   vtkDataSet* Input = nullptr;
   vtkMTimeType InputMTime = 0;
-  ScalarSettings Settings;
+  // The settings of the selection it was prepared with, a copy of its own (a new one at each
+  // Prepare(), so that copies of the mesh may share it).
+  vtkSmartPointer<vtkTetScalarSelection> Selection;
   double Matrix[16];
 
   class vtkStaging;

@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTetReferenceRenderer.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -25,7 +24,6 @@
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
-#include "vtkScalarsToColors.h"
 #include "vtkSmartPointer.h"
 #include "vtkTetRayIntegrator.h"
 #include "vtkTetReferenceBlending.h"
@@ -36,7 +34,6 @@
 #include "vtkTetReferenceScene.h"
 #include "vtkTetReferenceShading.h"
 #include "vtkTetReferenceVolume.h"
-#include "vtkTetScalarSelection.h"
 #include "vtkTimerLog.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -221,42 +218,6 @@ vtkCxxSetObjectMacro(vtkTetReferenceRenderer, OpaqueDepth, vtkFloatArray);
 vtkMTimeType vtkTetReferenceRenderer::GetMTime()
 {
   return std::max(this->Superclass::GetMTime(), this->Own->GetMTime());
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetScalarModeToDefault()
-{
-  this->SetScalarMode(VTK_SCALAR_MODE_DEFAULT);
-}
-void vtkTetReferenceRenderer::SetScalarModeToUsePointData()
-{
-  this->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_DATA);
-}
-void vtkTetReferenceRenderer::SetScalarModeToUseCellData()
-{
-  this->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_DATA);
-}
-void vtkTetReferenceRenderer::SetScalarModeToUsePointFieldData()
-{
-  this->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
-}
-void vtkTetReferenceRenderer::SetScalarModeToUseCellFieldData()
-{
-  this->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceRenderer::SetVectorModeToDefault()
-{
-  this->SetVectorMode(vtkTetScalarSelection::DEFAULT);
-}
-void vtkTetReferenceRenderer::SetVectorModeToComponent()
-{
-  this->SetVectorMode(vtkScalarsToColors::COMPONENT);
-}
-void vtkTetReferenceRenderer::SetVectorModeToMagnitude()
-{
-  this->SetVectorMode(vtkScalarsToColors::MAGNITUDE);
 }
 
 //------------------------------------------------------------------------------

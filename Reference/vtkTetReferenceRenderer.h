@@ -113,43 +113,18 @@ public:
   vtkDataSet* GetInput() { return this->Own->GetInput(); }
   ///@}
 
-  ///@{
   /**
-   * Which scalars to render, as vtkAbstractMapper: scalar mode (VTK_SCALAR_MODE_DEFAULT,
-   * USE_POINT_DATA, USE_CELL_DATA, USE_POINT_FIELD_DATA, USE_CELL_FIELD_DATA), and, for the
-   * field data modes, the array by id or by name.
+   * Which scalars to render and how a multi-component array becomes one scalar, as a mapper's
+   * (vtkTetScalarSelection, held by the renderer's own volume): scalar mode
+   * (VTK_SCALAR_MODE_DEFAULT, USE_POINT_DATA, USE_CELL_DATA, USE_POINT_FIELD_DATA,
+   * USE_CELL_FIELD_DATA) and, for the field data modes, the array by index or by name;
+   * VectorMode DEFAULT (the default) follows the colour transfer function's own VectorMode and
+   * VectorComponent as VTK's unstructured mappers do, COMPONENT (component VectorComponent) or
+   * MAGNITUDE override it. Components the property would blend or read as dependent are refused
+   * with an error. A mapper's settings are taken in one call:
+   * `reference->GetScalarSelection()->CopySettings(mapper->GetScalarSelection())`.
    */
-  void SetScalarMode(int mode) { this->Own->SetScalarMode(mode); }
-  int GetScalarMode() { return this->Own->GetScalarMode(); }
-  void SetScalarModeToDefault();
-  void SetScalarModeToUsePointData();
-  void SetScalarModeToUseCellData();
-  void SetScalarModeToUsePointFieldData();
-  void SetScalarModeToUseCellFieldData();
-  void SelectScalarArray(int arrayNum) { this->Own->SelectScalarArray(arrayNum); }
-  void SelectScalarArray(const char* arrayName) { this->Own->SelectScalarArray(arrayName); }
-  void SetArrayAccessMode(int mode) { this->Own->SetArrayAccessMode(mode); }
-  int GetArrayAccessMode() { return this->Own->GetArrayAccessMode(); }
-  int GetArrayId() { return this->Own->GetArrayId(); }
-  char* GetArrayName() { return this->Own->GetArrayName(); }
-  ///@}
-
-  ///@{
-  /**
-   * How a multi-component array becomes one scalar, by the mapper's rule
-   * (vtkTetScalarSelection): vtkTetScalarSelection::DEFAULT (-1, the default) follows the
-   * colour transfer function's own VectorMode and VectorComponent as VTK's unstructured mappers
-   * do; vtkScalarsToColors::COMPONENT (component VectorComponent) or MAGNITUDE override it.
-   * Components the property would blend or read as dependent are refused with an error.
-   */
-  void SetVectorMode(int mode) { this->Own->SetVectorMode(mode); }
-  int GetVectorMode() { return this->Own->GetVectorMode(); }
-  void SetVectorModeToDefault();
-  void SetVectorModeToComponent();
-  void SetVectorModeToMagnitude();
-  void SetVectorComponent(int component) { this->Own->SetVectorComponent(component); }
-  int GetVectorComponent() { return this->Own->GetVectorComponent(); }
-  ///@}
+  vtkTetScalarSelection* GetScalarSelection() { return this->Own->GetScalarSelection(); }
 
   ///@{
   /**

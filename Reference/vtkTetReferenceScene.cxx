@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTetReferenceScene.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
@@ -55,12 +54,7 @@ vtkTetReferenceScene::Source vtkTetReferenceScene::MakeSource(vtkTetReferenceVol
   source.Input = volume->GetInput();
   source.Property = volume->GetPropertyInForce();
   volume->GetMatrixInForce(source.Matrix);
-  source.ScalarMode = volume->GetScalarMode();
-  source.ArrayAccessMode = volume->GetArrayAccessMode();
-  source.ArrayId = volume->GetArrayId();
-  source.ArrayName = volume->GetArrayName();
-  source.VectorMode = volume->GetVectorMode();
-  source.VectorComponent = volume->GetVectorComponent();
+  source.Selection = volume->GetScalarSelection();
   return source;
 }
 
@@ -69,34 +63,26 @@ bool vtkTetReferenceScene::PrepareMesh(const Source& source, vtkTetReferenceMesh
   bool& rebuilt, vtkIdType& degenerate, std::string& error)
 {
   rebuilt = false;
-  // The one scalar the property takes from the selected array (the mapper's rule).
-  int cellFlag = -1;
-  vtkDataArray* array = vtkAbstractMapper::GetScalars(source.Input, source.ScalarMode,
-    source.ArrayAccessMode, source.ArrayId, source.ArrayName, cellFlag);
+  // The one scalar the property takes from the selected array (the mapper's rule), resolved on
+  // a copy: the mesh is prepared, and kept, for what it reads, the property's choice included.
   vtkNew<vtkTetScalarSelection> selection;
-  selection->SetVectorMode(source.VectorMode);
-  selection->SetVectorComponent(source.VectorComponent);
+  selection->CopySettings(source.Selection);
+  int cellFlag = -1;
+  vtkDataArray* array = selection->GetScalars(source.Input, cellFlag);
   if (array &&
     !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), source.Property))
   {
     error = std::string("Not rendered: ") + selection->GetErrorMessage() + ".";
     return false;
   }
-  vtkTetReferenceMesh::ScalarSettings settings;
-  settings.ScalarMode = source.ScalarMode;
-  settings.ArrayAccessMode = source.ArrayAccessMode;
-  settings.ArrayId = source.ArrayId;
-  settings.ArrayName = source.ArrayName ? source.ArrayName : "";
-  settings.ArrayNameSet = source.ArrayName != nullptr;
-  settings.Magnitude = selection->GetMagnitude();
-  settings.Component = selection->GetComponent();
-  if (mesh.IsPreparedFrom(source.Input, settings, source.Matrix))
+  selection->SetVectorModeToResolved();
+  if (mesh.IsPreparedFrom(source.Input, selection, source.Matrix))
   {
     return true;
   }
   rebuilt = true;
   degenerate = 0;
-  return mesh.Prepare(source.Input, settings, source.Matrix, degenerate, error);
+  return mesh.Prepare(source.Input, selection, source.Matrix, degenerate, error);
 }
 
 //------------------------------------------------------------------------------

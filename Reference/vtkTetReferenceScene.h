@@ -39,6 +39,7 @@ class vtkFloatArray;
 class vtkTetRayIntegrator;
 class vtkTetReferencePixelRays;
 class vtkTetReferenceVolume;
+class vtkTetScalarSelection;
 class vtkVolumeProperty;
 
 class vtkTetReferenceScene
@@ -55,12 +56,7 @@ public:
     vtkDataSet* Input = nullptr;
     vtkVolumeProperty* Property = nullptr;
     double Matrix[16];
-    int ScalarMode = 0;
-    int ArrayAccessMode = 0;
-    int ArrayId = -1;
-    const char* ArrayName = nullptr;
-    int VectorMode = -1;
-    int VectorComponent = 0;
+    vtkTetScalarSelection* Selection = nullptr; // the volume's (not resolved: its settings)
   };
 
   /**

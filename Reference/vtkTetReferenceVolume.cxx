@@ -10,22 +10,19 @@
 =========================================================================*/
 #include "vtkTetReferenceVolume.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkDataSet.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
-#include "vtkTetScalarSelection.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkTetReferenceVolume);
 
 //------------------------------------------------------------------------------
 vtkTetReferenceVolume::vtkTetReferenceVolume()
   : Matrix(vtkMatrix4x4::New())
-  , ScalarMode(VTK_SCALAR_MODE_DEFAULT)
-  , ArrayAccessMode(VTK_GET_ARRAY_BY_ID)
-  , VectorMode(vtkTetScalarSelection::DEFAULT)
 {
 }
 
@@ -35,7 +32,6 @@ vtkTetReferenceVolume::~vtkTetReferenceVolume()
   this->SetInputData(nullptr);
   this->SetVolumeProperty(nullptr);
   this->SetVolume(nullptr);
-  this->SetArrayName(nullptr);
   this->Matrix->Delete();
 }
 
@@ -86,27 +82,9 @@ void vtkTetReferenceVolume::GetMatrixInForce(double matrix[16])
 }
 
 //------------------------------------------------------------------------------
-void vtkTetReferenceVolume::SelectScalarArray(int arrayNum)
+vtkMTimeType vtkTetReferenceVolume::GetMTime()
 {
-  if (this->ArrayId == arrayNum && this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
-  {
-    return;
-  }
-  this->ArrayId = arrayNum;
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_ID;
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
-void vtkTetReferenceVolume::SelectScalarArray(const char* arrayName)
-{
-  if (!arrayName)
-  {
-    return;
-  }
-  this->SetArrayName(arrayName);
-  this->ArrayAccessMode = VTK_GET_ARRAY_BY_NAME;
-  this->Modified();
+  return std::max(this->Superclass::GetMTime(), this->ScalarSelection->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -116,12 +94,8 @@ void vtkTetReferenceVolume::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Input: " << this->Input << "\n";
   os << indent << "VolumeProperty: " << this->VolumeProperty << "\n";
   os << indent << "Volume: " << this->Volume << "\n";
-  os << indent << "ScalarMode: " << this->ScalarMode << "\n";
-  os << indent << "ArrayAccessMode: " << this->ArrayAccessMode << "\n";
-  os << indent << "ArrayId: " << this->ArrayId << "\n";
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(none)") << "\n";
-  os << indent << "VectorMode: " << this->VectorMode << "\n";
-  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "ScalarSelection:\n";
+  this->ScalarSelection->PrintSelf(os, indent.GetNextIndent());
   os << indent << "Matrix:\n";
   this->Matrix->PrintSelf(os, indent.GetNextIndent());
 }

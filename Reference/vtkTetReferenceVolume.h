@@ -13,12 +13,13 @@
  * @brief   one more volume for vtkTetReferenceRenderer: a mesh, its property, scalars and matrix
  *
  * What vtkTetReferenceRenderer's own settings say of its one input (SetInputData,
- * SetVolumeProperty, the scalar selection, SetVolumeMatrix or SetVolume), said of one more
+ * SetVolumeProperty, GetScalarSelection(), SetVolumeMatrix or SetVolume), said of one more
  * volume of the scene: vtkTetReferenceRenderer::AddVolume() takes any number of them, and the
  * renderer composites all its volumes in one pass in depth order, summing the media where they
  * overlap (docs/design.md, "Overlapping media"). The settings mean what the renderer's mean:
- * scalars chosen as VTK's mappers choose them, reduced to one by vtkTetScalarSelection, lengths
- * in world coordinates after the matrix.
+ * scalars chosen as VTK's mappers choose them and reduced to one (vtkTetScalarSelection),
+ * lengths in world coordinates after the matrix. The renderer's own settings are those of a
+ * volume of this class that it holds.
  *
  * @sa vtkTetReferenceRenderer
  */
@@ -26,7 +27,9 @@
 #ifndef vtkTetReferenceVolume_h
 #define vtkTetReferenceVolume_h
 
+#include "vtkNew.h" // For vtkNew
 #include "vtkObject.h"
+#include "vtkTetScalarSelection.h"          // For vtkNew<vtkTetScalarSelection>
 #include "vtkTiledRayCastReferenceModule.h" // For export macro
 
 class vtkDataSet;
@@ -79,24 +82,18 @@ public:
    */
   void GetMatrixInForce(double matrix[16]);
 
-  ///@{
   /**
-   * Which scalars (as vtkTetReferenceRenderer: scalar mode, array by id or name, vector mode
-   * and component).
+   * Which scalars are rendered, and how a multi-component array becomes one scalar, as a
+   * mapper's (vtkTetScalarSelection: scalar mode, array by index or name, vector mode and
+   * component; VectorMode DEFAULT, the default, follows the colour transfer function as VTK's
+   * unstructured mappers do). Never null.
    */
-  vtkSetMacro(ScalarMode, int);
-  vtkGetMacro(ScalarMode, int);
-  void SelectScalarArray(int arrayNum);
-  void SelectScalarArray(const char* arrayName);
-  vtkSetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayAccessMode, int);
-  vtkGetMacro(ArrayId, int);
-  vtkGetStringMacro(ArrayName);
-  vtkSetMacro(VectorMode, int);
-  vtkGetMacro(VectorMode, int);
-  vtkSetMacro(VectorComponent, int);
-  vtkGetMacro(VectorComponent, int);
-  ///@}
+  vtkTetScalarSelection* GetScalarSelection() { return this->ScalarSelection; }
+
+  /**
+   * The latest of the volume's modification time and its scalar selection's.
+   */
+  vtkMTimeType GetMTime() override;
 
 protected:
   vtkTetReferenceVolume();
@@ -106,18 +103,11 @@ protected:
   vtkVolumeProperty* VolumeProperty = nullptr;
   vtkMatrix4x4* Matrix;
   vtkVolume* Volume = nullptr;
-  int ScalarMode;
-  int ArrayAccessMode;
-  int ArrayId = -1;
-  char* ArrayName = nullptr;
-  int VectorMode;
-  int VectorComponent = 0;
+  vtkNew<vtkTetScalarSelection> ScalarSelection;
 
 private:
   vtkTetReferenceVolume(const vtkTetReferenceVolume&) = delete;
   void operator=(const vtkTetReferenceVolume&) = delete;
-
-  vtkSetStringMacro(ArrayName);
 };
 
 #endif

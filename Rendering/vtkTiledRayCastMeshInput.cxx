@@ -10,7 +10,6 @@
 =========================================================================*/
 #include "vtkTiledRayCastMeshInput.h"
 
-#include "vtkAbstractMapper.h"
 #include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataSet.h"
@@ -25,6 +24,7 @@
 vtkTiledRayCastMeshInput::vtkTiledRayCastMeshInput()
   : Merger(vtkTetMeshBlockMerger::New())
 {
+  this->MergedScalars->SetVectorModeToComponent();
 }
 
 //------------------------------------------------------------------------------
@@ -35,20 +35,14 @@ vtkTiledRayCastMeshInput::~vtkTiledRayCastMeshInput()
 
 //------------------------------------------------------------------------------
 vtkDataSet* vtkTiledRayCastMeshInput::Prepare(vtkTiledRayCastVolumeMapper* mapper,
-  vtkDataObject* input, vtkVolumeProperty* property, vtkTetMeshBuilder* builder,
-  std::string& error)
+  vtkDataObject* input, vtkVolumeProperty* property, vtkTetMeshBuilder* builder, std::string& error)
 {
   this->Composite = false;
   if (vtkDataObjectTree* tree = vtkDataObjectTree::SafeDownCast(input))
   {
     this->Composite = true;
     vtkTetMeshBlockMerger* merger = this->Merger;
-    merger->SetScalarMode(mapper->GetScalarMode());
-    merger->SetArrayAccessMode(mapper->GetArrayAccessMode());
-    merger->SetArrayId(mapper->GetArrayId());
-    merger->SetArrayName(mapper->GetArrayName());
-    merger->SetVectorMode(mapper->GetVectorMode());
-    merger->SetVectorComponent(mapper->GetVectorComponent());
+    merger->GetScalarSelection()->CopySettings(mapper->GetScalarSelection());
     vtkUnstructuredGrid* merged = merger->Merge(tree, property);
     if (!merged)
     {
@@ -56,38 +50,25 @@ vtkDataSet* vtkTiledRayCastMeshInput::Prepare(vtkTiledRayCastVolumeMapper* mappe
       return nullptr;
     }
     // The merged grid's active scalars are the one scalar to render.
-    builder->SetScalarMode(VTK_SCALAR_MODE_DEFAULT);
-    builder->SetArrayAccessMode(VTK_GET_ARRAY_BY_ID);
-    builder->SetArrayId(-1);
-    builder->SetArrayName(nullptr);
-    builder->SetVectorModeToComponent();
-    builder->SetVectorComponent(0);
+    builder->GetScalarSelection()->CopySettings(this->MergedScalars);
     return merged;
   }
 
-  vtkDataSet* grid = vtkDataSet::SafeDownCast(input);
-  builder->SetScalarMode(mapper->GetScalarMode());
-  builder->SetArrayAccessMode(mapper->GetArrayAccessMode());
-  builder->SetArrayId(mapper->GetArrayId());
-  builder->SetArrayName(mapper->GetArrayName());
   // The one scalar the property takes from the array (vtkTetScalarSelection's rule, which the
-  // reference renderer follows too); a missing array is the builder's error.
-  int cellFlag = -1;
-  vtkDataArray* array = grid ? vtkAbstractMapper::GetScalars(grid, mapper->GetScalarMode(),
-                                 mapper->GetArrayAccessMode(), mapper->GetArrayId(),
-                                 mapper->GetArrayName(), cellFlag)
-                             : nullptr;
+  // reference renderer follows too), resolved here for the builder, which sees no property; a
+  // missing array is the builder's error.
+  vtkDataSet* grid = vtkDataSet::SafeDownCast(input);
   vtkNew<vtkTetScalarSelection> selection;
-  selection->SetVectorMode(mapper->GetVectorMode());
-  selection->SetVectorComponent(mapper->GetVectorComponent());
+  selection->CopySettings(mapper->GetScalarSelection());
+  int cellFlag = -1;
+  vtkDataArray* array = selection->GetScalars(grid, cellFlag);
   if (array && !selection->Resolve(array->GetNumberOfComponents(), array->GetName(), property))
   {
     error = std::string("Not rendered: ") + selection->GetErrorMessage();
     return nullptr;
   }
-  builder->SetVectorMode(
-    selection->GetMagnitude() ? vtkTetMeshBuilder::Magnitude : vtkTetMeshBuilder::Component);
-  builder->SetVectorComponent(selection->GetComponent());
+  selection->SetVectorModeToResolved();
+  builder->GetScalarSelection()->CopySettings(selection);
   return grid;
 }
 

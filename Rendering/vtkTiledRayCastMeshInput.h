@@ -23,7 +23,8 @@
 #ifndef vtkTiledRayCastMeshInput_h
 #define vtkTiledRayCastMeshInput_h
 
-#include "vtkNew.h" // For vtkNew
+#include "vtkNew.h"                // For vtkNew
+#include "vtkTetScalarSelection.h" // For vtkNew<vtkTetScalarSelection>
 
 #include <string> // For std::string
 
@@ -59,6 +60,8 @@ private:
   void operator=(const vtkTiledRayCastMeshInput&) = delete;
 
   vtkTetMeshBlockMerger* Merger;
+  // What the builder reads of the merged grid: its active scalars, one component.
+  vtkNew<vtkTetScalarSelection> MergedScalars;
   bool Composite = false;
 };
 

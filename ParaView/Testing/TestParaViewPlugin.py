@@ -147,14 +147,15 @@ def compare(output, result, mesh_file):
     camera.SetClippingRange(c["clipping_range"])
     reference = vtkTetReferenceRenderer()
     reference.SetInputData(reader.GetOutput())
-    reference.SetScalarModeToUsePointFieldData()
-    reference.SelectScalarArray(result["array"])
+    selection = reference.GetScalarSelection()
+    selection.SetScalarModeToUsePointFieldData()
+    selection.SelectScalarArray(result["array"])
     # A component or the magnitude, as ParaView's map says.
     if result["vector_mode"] == "Component":
-        reference.SetVectorModeToComponent()
+        selection.SetVectorModeToComponent()
     else:
-        reference.SetVectorModeToMagnitude()
-    reference.SetVectorComponent(result["vector_component"])
+        selection.SetVectorModeToMagnitude()
+    selection.SetVectorComponent(result["vector_component"])
     reference.SetVolumeProperty(prop)
     reference.SetCamera(camera)
     reference.SetImageSize(result["size"], result["size"])

@@ -303,7 +303,7 @@ int TestMixed()
     cellValues->SetValue(c, static_cast<int>(10 * c));
   }
   grid->GetCellData()->SetScalars(cellValues);
-  builder.B->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_DATA);
+  builder.B->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_DATA);
   mesh = builder.Build(grid);
   TRC_CHECK(builder.B->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
   TRC_CHECK(mesh->GetHasCellScalars());
@@ -586,7 +586,7 @@ int TestNonFiniteScalars()
   auto c = MakeArray<vtkFloatArray>("c", grid->GetNumberOfCells(), [](vtkIdType k) { return k; });
   c->SetValue(2, std::numeric_limits<float>::quiet_NaN());
   grid->GetCellData()->SetScalars(c);
-  builder.B->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_DATA);
+  builder.B->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_DATA);
   mesh = builder.Build(grid);
   TRC_CHECK(builder.B->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
   TRC_CHECK(mesh->GetReport()->GetNumberOfNonFiniteScalars() == 1);
@@ -617,23 +617,23 @@ int TestScalarSelection()
   TRC_CHECK(mesh->GetNumberOfTetrahedra() == 5);
 
   // An unknown array name.
-  builder.B->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
-  builder.B->SelectScalarArray("nonexistent");
+  builder.B->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+  builder.B->GetScalarSelection()->SelectScalarArray("nonexistent");
   mesh = builder.Build(grid);
   TRC_CHECK(Refused(mesh, "\"nonexistent\""));
   TRC_CHECK(builder.B->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
 
   // The right name: usable, and only the scalars were rebuilt.
-  builder.B->SelectScalarArray("s");
+  builder.B->GetScalarSelection()->SelectScalarArray("s");
   mesh = builder.Build(grid);
   TRC_CHECK(mesh->GetReport()->GetUsable());
   TRC_CHECK(builder.B->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
   TRC_CHECK(mesh->GetPointScalars()[2] == 1.0 + 2.0);
   // By index.
-  builder.B->SelectScalarArray(0);
+  builder.B->GetScalarSelection()->SelectScalarArray(0);
   mesh = builder.Build(grid);
   TRC_CHECK(mesh->GetReport()->GetUsable());
-  builder.B->SelectScalarArray(7);
+  builder.B->GetScalarSelection()->SelectScalarArray(7);
   mesh = builder.Build(grid);
   TRC_CHECK(Refused(mesh, "index 7"));
 
@@ -647,10 +647,10 @@ int TestScalarSelection()
     vectors->SetTuple3(i, 3.0 * i, 4.0 * i, -1.0 * i);
   }
   grid->GetPointData()->AddArray(vectors);
-  builder.B->SelectScalarArray("v");
+  builder.B->GetScalarSelection()->SelectScalarArray("v");
   for (int component = 0; component < 3; ++component)
   {
-    builder.B->SetVectorComponent(component);
+    builder.B->GetScalarSelection()->SetVectorComponent(component);
     mesh = builder.Build(grid);
     TRC_CHECK(mesh->GetReport()->GetUsable());
     TRC_CHECK(builder.B->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
@@ -660,19 +660,19 @@ int TestScalarSelection()
       TRC_CHECK(mesh->GetPointScalars()[i] == factor[component] * i);
     }
   }
-  builder.B->SetVectorModeToMagnitude();
+  builder.B->GetScalarSelection()->SetVectorModeToMagnitude();
   mesh = builder.Build(grid);
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
   {
     TRC_CHECK(std::abs(mesh->GetPointScalars()[i] - std::sqrt(26.0) * i) < 1e-12);
   }
-  builder.B->SetVectorModeToComponent();
-  builder.B->SetVectorComponent(5);
+  builder.B->GetScalarSelection()->SetVectorModeToComponent();
+  builder.B->GetScalarSelection()->SetVectorComponent(5);
   mesh = builder.Build(grid);
   TRC_CHECK(Refused(mesh, "component 5"));
 
   // Integer types, converted exactly.
-  builder.B->SetVectorComponent(0);
+  builder.B->GetScalarSelection()->SetVectorComponent(0);
   vtkNew<vtkUnsignedCharArray> uchar;
   vtkNew<vtkShortArray> shorts;
   vtkNew<vtkIntArray> ints;
@@ -688,7 +688,7 @@ int TestScalarSelection()
       arrays[a]->SetComponent(i, 0, a == 1 ? -7.0 * i : 40.0 * i);
     }
     grid->GetPointData()->AddArray(arrays[a]);
-    builder.B->SelectScalarArray(names[a]);
+    builder.B->GetScalarSelection()->SelectScalarArray(names[a]);
     mesh = builder.Build(grid);
     TRC_CHECK(mesh->GetReport()->GetUsable());
     for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
@@ -702,8 +702,8 @@ int TestScalarSelection()
   // Cell data selected by name.
   grid->GetCellData()->AddArray(
     MakeArray<vtkShortArray>("cells", grid->GetNumberOfCells(), [](vtkIdType c) { return -c; }));
-  builder.B->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
-  builder.B->SelectScalarArray("cells");
+  builder.B->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_USE_CELL_FIELD_DATA);
+  builder.B->GetScalarSelection()->SelectScalarArray("cells");
   mesh = builder.Build(grid);
   TRC_CHECK(mesh->GetReport()->GetUsable());
   TRC_CHECK(mesh->GetHasCellScalars());

@@ -269,12 +269,12 @@ int PointsAndScalars(Pipeline& p, vtkUnstructuredGrid* grid)
   TRC_CHECK_EMPTY(CompareWithFullBuild(grid, p));
 
   // A scalar setting: scalars only.
-  p.Builder->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
-  p.Builder->SelectScalarArray("unrelated");
+  p.Builder->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_USE_POINT_FIELD_DATA);
+  p.Builder->GetScalarSelection()->SelectScalarArray("unrelated");
   p.Build(grid);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
   TRC_CHECK(mesh->GetPointScalars()[20] == 1.0);
-  p.Builder->SetScalarMode(VTK_SCALAR_MODE_DEFAULT);
+  p.Builder->GetScalarSelection()->SetScalarMode(VTK_SCALAR_MODE_DEFAULT);
   p.Build(grid);
   TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
 

@@ -28,6 +28,7 @@
 #include "vtkTestErrorObserver.h"
 #include "vtkTetRayIntegrator.h"
 #include "vtkTetReferenceRenderer.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -105,10 +106,10 @@ int BadInput(Fixture& f)
   TRC_CHECK(expectFailure(r, "no scalars"));
 
   r->SetInputData(f.Cube);
-  r->SetScalarModeToUsePointFieldData();
-  r->SelectScalarArray("NoSuchArray");
+  r->GetScalarSelection()->SetScalarModeToUsePointFieldData();
+  r->GetScalarSelection()->SelectScalarArray("NoSuchArray");
   TRC_CHECK(expectFailure(r, "unknown array"));
-  r->SetScalarModeToDefault();
+  r->GetScalarSelection()->SetScalarModeToDefault();
 
   r->SetCamera(nullptr);
   TRC_CHECK(expectFailure(r, "no camera"));
@@ -383,8 +384,8 @@ int ScalarSelection(Fixture& f)
     r->SetImageSize(24, 20);
     r->DoublePrecisionOutputOn();
   }
-  byCells->SetScalarModeToUseCellFieldData();
-  byCells->SelectScalarArray("CellField");
+  byCells->GetScalarSelection()->SetScalarModeToUseCellFieldData();
+  byCells->GetScalarSelection()->SelectScalarArray("CellField");
   TRC_CHECK(byPoints->Render() && byCells->Render());
   TRC_CHECK(Difference(byPoints->GetOutput(), byCells->GetOutput()) <= 1e-14);
 
@@ -418,18 +419,19 @@ int ScalarSelection(Fixture& f)
   byVector->SetCamera(f.Camera);
   byVector->SetImageSize(24, 20);
   byVector->DoublePrecisionOutputOn();
-  byVector->SetScalarModeToUsePointFieldData();
-  byVector->SelectScalarArray("V");
-  byVector->SetVectorModeToComponent(); // the default follows the colour function (component 0)
-  byVector->SetVectorComponent(1);
+  vtkTetScalarSelection* selection = byVector->GetScalarSelection();
+  selection->SetScalarModeToUsePointFieldData();
+  selection->SelectScalarArray("V");
+  selection->SetVectorModeToComponent(); // the default follows the colour function (component 0)
+  selection->SetVectorComponent(1);
   TRC_CHECK(byVector->Render());
   TRC_CHECK(Difference(byVector->GetOutput(), byPoints->GetOutput()) <= 1e-14);
-  byVector->SelectScalarArray("W");
-  byVector->SetVectorModeToMagnitude();
+  selection->SelectScalarArray("W");
+  selection->SetVectorModeToMagnitude();
   TRC_CHECK(byVector->Render());
   TRC_CHECK(Difference(byVector->GetOutput(), byPoints->GetOutput()) <= 1e-12);
-  byVector->SetVectorModeToComponent();
-  byVector->SetVectorComponent(0); // 0.6 s: a different image
+  selection->SetVectorModeToComponent();
+  selection->SetVectorComponent(0); // 0.6 s: a different image
   TRC_CHECK(byVector->Render());
   TRC_CHECK(Difference(byVector->GetOutput(), byPoints->GetOutput()) > 1e-4);
   return EXIT_SUCCESS;

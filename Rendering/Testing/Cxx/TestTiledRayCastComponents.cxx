@@ -97,14 +97,15 @@ struct CoordinatesScene
            trctest::Bounds(), label.c_str(),
            [&](vtkTetReferenceRenderer* reference)
            {
+             vtkTetScalarSelection* selection = reference->GetScalarSelection();
              if (magnitude)
              {
-               reference->SetVectorModeToMagnitude();
+               selection->SetVectorModeToMagnitude();
              }
              else
              {
-               reference->SetVectorModeToComponent();
-               reference->SetVectorComponent(component);
+               selection->SetVectorModeToComponent();
+               selection->SetVectorComponent(component);
              }
            }) &&
       ok;
@@ -136,9 +137,7 @@ bool Refused(const std::string& label, vtkUnstructuredGrid* grid, vtkVolumePrope
   vtkNew<MessageCounter> referenceErrors;
   reference->AddObserver(vtkCommand::ErrorEvent, referenceErrors);
   reference->SetInputData(grid);
-  reference->SetScalarMode(view.Mapper->GetScalarMode());
-  reference->SetVectorMode(view.Mapper->GetVectorMode());
-  reference->SetVectorComponent(view.Mapper->GetVectorComponent());
+  reference->GetScalarSelection()->CopySettings(view.Mapper->GetScalarSelection());
   reference->SetVolumeProperty(property);
   reference->SetCamera(view.Renderer->GetActiveCamera());
   reference->SetImageSize(8, 8);

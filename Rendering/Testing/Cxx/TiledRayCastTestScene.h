@@ -38,6 +38,7 @@
 #include "vtkSphereSource.h"
 #include "vtkTestUtilities.h"
 #include "vtkTetReferenceRenderer.h"
+#include "vtkTetScalarSelection.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastVolumeMapper.h"
 #include "vtkUnsignedCharArray.h"
@@ -309,18 +310,7 @@ inline bool CheckAgainstReference(vtkRenderWindow* window, vtkRenderer* renderer
 
   vtkNew<vtkTetReferenceRenderer> reference;
   reference->SetInputData(mapper->GetInput());
-  reference->SetScalarMode(mapper->GetScalarMode());
-  reference->SetArrayAccessMode(mapper->GetArrayAccessMode());
-  if (mapper->GetArrayAccessMode() == VTK_GET_ARRAY_BY_NAME && mapper->GetArrayName())
-  {
-    reference->SelectScalarArray(mapper->GetArrayName());
-  }
-  else if (mapper->GetArrayAccessMode() == VTK_GET_ARRAY_BY_ID)
-  {
-    reference->SelectScalarArray(mapper->GetArrayId());
-  }
-  reference->SetVectorMode(mapper->GetVectorMode());
-  reference->SetVectorComponent(mapper->GetVectorComponent());
+  reference->GetScalarSelection()->CopySettings(mapper->GetScalarSelection());
   reference->SetVolumeProperty(volume->GetProperty());
   reference->SetCamera(renderer->GetActiveCamera());
   reference->SetImageSize(width, height);
