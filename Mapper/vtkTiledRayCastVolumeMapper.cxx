@@ -202,6 +202,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   this->Statistics->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ValidationReport:\n";
   this->ValidationReport->PrintSelf(os, indent.GetNextIndent());
-  os << indent << "ScalarSelection:\n";
-  this->GetScalarSelection()->PrintSelf(os, indent.GetNextIndent());
+  // The array settings are vtkAbstractVolumeMapper's, printed by it.
+  os << indent << "VectorMode: " << this->GetVectorMode() << "\n";
+  os << indent << "VectorComponent: " << this->GetVectorComponent() << "\n";
 }
