@@ -1,7 +1,7 @@
 """vtkTiledRayCastVolumeMapper driven from Debian's /usr/bin/python3, as a pvpython script would.
 
 Renders spx_vistrails.vtu (non-convex, several boundary layers) in a headless window, checks the
-image against the exact reference renderer (RMSE <= 0.75, max <= 8 in 1/255, the bounds of the
+image against the exact reference renderer (RMSE <= 0.75, max <= 2 in 1/255, the bounds of the
 C++ scene tests), and reads the statistics and the validation report from Python. Checks the
 mapper's build progress (ProgressEvent, as any vtkAlgorithm) and that a frame without input
 leaves the statistics saying nothing was rendered.
