@@ -32,6 +32,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->Rendered = false;
   this->SceneDepthCopied = false;
   this->DepthPeelingStage = 0;
+  this->DepthPeelingEntriesReused = false;
   this->ImageSize[0] = this->ImageSize[1] = 0;
   this->NumberOfRays = 0;
   this->NumberOfLayers = 0;
@@ -129,7 +130,8 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
   if (this->DepthPeelingStage > 0)
   {
     text << "depth peeling stage " << this->DepthPeelingStage << " (draw "
-         << this->NumberOfDepthPeelingDraws << " of the frame), ";
+         << this->NumberOfDepthPeelingDraws << " of the frame"
+         << (this->DepthPeelingEntriesReused ? ", the first draw's entries" : "") << "), ";
   }
   text << this->NumberOfVisibleTetrahedra << " tets visible, " << this->NumberOfEntryFaces
        << " entry faces; GPU ms: " << (compute ? "entry pass " : "first hit ")
@@ -152,6 +154,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SceneDepthCopied: " << this->SceneDepthCopied << "\n";
   os << indent << "DepthPeelingStage: " << this->DepthPeelingStage << "\n";
   os << indent << "NumberOfDepthPeelingDraws: " << this->NumberOfDepthPeelingDraws << "\n";
+  os << indent << "DepthPeelingEntriesReused: " << this->DepthPeelingEntriesReused << "\n";
   os << indent << "ImageSize: " << this->ImageSize[0] << " " << this->ImageSize[1] << "\n";
   os << indent << "ImageSampleDistance: " << this->ImageSampleDistance << "\n";
   os << indent << "NumberOfRays: " << this->NumberOfRays << "\n";

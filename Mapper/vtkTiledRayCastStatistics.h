@@ -69,12 +69,16 @@ public:
    * the translucent geometry; 2: a peel, the volume between this peel's fragments and the last
    * one's; 3: the remainder after the last peel), and how many times the peeling has drawn the
    * volume in the renderer's current frame (one traversal each: 1 + peels, + 1 for a
-   * remainder).
+   * remainder), and whether the last draw traversed the entries that the frame's first draw
+   * listed, with no entry pass of its own (true in the draws after the first where the context
+   * can clear a texture in place: OpenGL 4.4 or GL_ARB_clear_texture).
    */
   vtkSetMacro(DepthPeelingStage, int);
   vtkGetMacro(DepthPeelingStage, int);
   vtkSetMacro(NumberOfDepthPeelingDraws, int);
   vtkGetMacro(NumberOfDepthPeelingDraws, int);
+  vtkSetMacro(DepthPeelingEntriesReused, bool);
+  vtkGetMacro(DepthPeelingEntriesReused, bool);
   ///@}
 
   ///@{
@@ -341,6 +345,7 @@ protected:
   bool SceneDepthCopied = false;
   int DepthPeelingStage = 0;
   int NumberOfDepthPeelingDraws = 0;
+  bool DepthPeelingEntriesReused = false;
   int ImageSize[2] = { 0, 0 };
   double ImageSampleDistance = 1.0;
   vtkIdType NumberOfRays = 0;

@@ -126,6 +126,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.Verify = this->Self->SynchronousStatistics;
   frame.PeelStage = this->PeelStage();
   frame.Peel = &this->VolumetricPeel;
+  frame.PeelVolume = this->FrameVolume;
   std::copy(this->Geometry.NearPlane, this->Geometry.NearPlane + 3, frame.ViewDirection);
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
@@ -418,6 +419,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
 {
   // CPU work: only what changed.
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  this->FrameVolume = vol;
   const int width = this->Viewport[2];
   const int height = this->Viewport[3];
   if (!this->UpdateMesh(input, property))

@@ -145,6 +145,7 @@ public:
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
+  vtkVolume* FrameVolume = nullptr; // the volume of the frame being drawn (not held)
   vtkTiledRayCastLighting Lighting;
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   int Viewport[4] = { 0, 0, 0, 0 };

@@ -96,11 +96,15 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
   vtkTiledRayCastPhaseTimers& timers, vtkTiledRayCastStatistics* stats, std::string& error)
 {
   vtkOpenGLState* state = frame.Window->GetState();
+  // A later stage of VTK's depth peeling traverses the entries the volume's first stage listed.
+  this->Reusing =
+    frame.PeelStage >= 2 && frame.PeelVolume && frame.PeelVolume == this->EntriesKeptFor;
   if (!this->BeginFrame(frame, stats, error))
   {
     state->PopFramebufferBindings();
     return false;
   }
+  if (!this->Reusing)
   {
     vtkTiledRayCastDebugEvent event("ListEntries");
     timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
@@ -130,6 +134,7 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
   this->Composite(frame, setup);
   timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
 
+  stats->SetDepthPeelingEntriesReused(this->Reusing);
   stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
   stats->SetNumberOfRayCastPasses(1);
   stats->GetPassesPerTile().clear();
@@ -282,7 +287,8 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   width = std::max(width, this->TargetSize[0]);
   height = std::max(height, this->TargetSize[1]);
   // The list heads start at zero (no entry) and the traversal leaves them so: they are
-  // cleared here, at allocation, and never again.
+  // cleared here, at allocation, and again only after the draws of VTK's depth peeling, which
+  // keep them for the next draw (ListEntries).
   const std::vector<std::uint32_t> zeros(static_cast<size_t>(width) * height, 0u);
   vtkTextureObject* heads = this->EntryHeads;
   heads->ReleaseGraphicsResources(window);
@@ -349,6 +355,8 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   this->TargetSize[0] = width;
   this->TargetSize[1] = height;
+  this->HeadsKept = false; // new heads, zeros
+  this->EntriesKeptFor = nullptr;
   this->CountsPending[0] = this->CountsPending[1] = false;
   this->Verified = false;
   return true;
@@ -422,6 +430,11 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   }
   this->CountsBuffer = next;
 
+  if (this->Reusing)
+  {
+    this->Verifying = false; // the list holds this view: the first stage saw to it
+    return true;
+  }
   // A group's list has a fourth word per entry: the list is allocated again when that changes.
   const vtkIdType words = frame.Members.empty() ? 3 : 4;
   if (words != this->EntryWords)
@@ -474,6 +487,15 @@ void vtkTiledRayCastComputePipeline::ListEntries(
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
 
+  if (this->HeadsKept)
+  {
+    // The last traversal (a stage of VTK's depth peeling) left the heads for the next draw.
+    vtkTiledRayCastComputeShader::ClearImage(this->EntryHeads);
+    vtkTiledRayCastComputeShader::Barrier(
+      GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    this->HeadsKept = false;
+  }
+  this->EntriesKeptFor = nullptr;
   this->EntryCount.Write(0, sizeof(std::uint32_t));
   this->BindBuffers();
   if (frame.Members.empty())
@@ -588,6 +610,11 @@ void vtkTiledRayCastComputePipeline::Traverse(
     vtkTiledRayCastComputeShader::BindImage(
       BackColorImageUnit, this->BackColor, GL_WRITE_ONLY, GL_RGBA16);
   }
+  // Inside VTK's depth peeling the heads stay for the volume's next draw, where they can be
+  // cleared before another listing.
+  const bool keep =
+    frame.PeelStage > 0 && frame.PeelVolume && vtkTiledRayCastComputeShader::CanClearImages();
+  traversal->SetUniformi("in_keepEntries", keep ? 1 : 0);
   const int size[2] = { frame.Width, frame.Height };
   traversal->SetUniform2i("in_imageSize", size);
   traversal->SetUniformi("in_maximumSteps", frame.MaximumSteps);
@@ -600,6 +627,11 @@ void vtkTiledRayCastComputePipeline::Traverse(
     GL_SHADER_STORAGE_BARRIER_BIT);
   vtkTiledRayCastComputeShader::UnbindImage(HeadsImageUnit);
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
+  if (keep)
+  {
+    this->HeadsKept = true;
+    this->EntriesKeptFor = frame.PeelVolume;
+  }
   if (frame.PeelStage > 0)
   {
     vtkTiledRayCastComputeShader::UnbindImage(BackColorImageUnit);
@@ -758,4 +790,6 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
   this->Verified = false;
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->CountsPending[0] = this->CountsPending[1] = false;
+  this->HeadsKept = false;
+  this->EntriesKeptFor = nullptr;
 }

@@ -180,6 +180,9 @@ public:
     // textures, which the viewport (origin 0) covers.
     int PeelStage = 0;
     const vtkTiledRayCastVolumetricPeel* Peel = nullptr;
+    // The volume drawn in the peeling: its later stages traverse the entries its first stage
+    // listed (the view is the same in every draw of a frame).
+    const void* PeelVolume = nullptr;
   };
 
   /**
@@ -334,6 +337,12 @@ private:
   vtkIdType ListedTetrahedra = 0;
   float LastDirection[3] = { 0, 0, 0 };
   double LastCoverage = 0;
+  // Inside VTK's depth peeling the list serves every draw of the volume's frame: the traversal
+  // leaves the heads (HeadsKept, cleared before the next listing), and the draws after the
+  // first list nothing (Reusing) when the list is that volume's (EntriesKeptFor).
+  bool HeadsKept = false;
+  const void* EntriesKeptFor = nullptr;
+  bool Reusing = false;
 };
 
 #endif

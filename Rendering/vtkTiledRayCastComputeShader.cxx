@@ -147,3 +147,15 @@ void vtkTiledRayCastComputeShader::Barrier(unsigned int bits)
 {
   glMemoryBarrier(bits);
 }
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputeShader::CanClearImages()
+{
+  return GLEW_VERSION_4_4 || GLEW_ARB_clear_texture;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputeShader::ClearImage(vtkTextureObject* texture)
+{
+  glClearTexImage(texture->GetHandle(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+}

@@ -92,6 +92,15 @@ public:
    */
   static bool SetDepthClamp(bool on);
 
+  ///@{
+  /**
+   * Whether this context can zero a texture in place (OpenGL 4.4 or GL_ARB_clear_texture), and
+   * zero level 0 of an unsigned-integer texture (glClearTexImage).
+   */
+  static bool CanClearImages();
+  static void ClearImage(vtkTextureObject* texture);
+  ///@}
+
 protected:
   vtkTiledRayCastComputeShader();
   ~vtkTiledRayCastComputeShader() override;

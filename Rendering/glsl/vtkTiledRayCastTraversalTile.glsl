@@ -15,6 +15,10 @@ layout(local_size_x = 8, local_size_y = 4) in;
 
 layout(binding = 1, rgba16) uniform writeonly image2D in_colorImage;
 uniform ivec2 in_imageSize;
+// 1 inside VTK's depth peeling: the heads stay for the volume's next draw of the frame, which
+// traverses the same list (the CPU clears them before the next listing). 0: each head is set
+// back to 0 as it is taken, so the next frame starts from empty lists without a clear.
+uniform int in_keepEntries;
 
 layout(std430, binding = 2) buffer trcRayCountBuffer
 {
@@ -132,12 +136,12 @@ void trcEndTile()
 }
 
 // The first node (index + 1) of the pixel's entry list, 0 for none; the head is set back to 0 for
-// the next frame. A list that lost entries is counted whether or not any of them fit (a ray that
+// the next frame (unless in_keepEntries). A list that lost entries is counted whether or not any of them fit (a ray that
 // lost them all has no list), and here, so that no register holds that through the walk.
 uint trcTakeEntries(ivec2 pixel, bool inImage)
 {
   uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
-  if (word != 0u)
+  if (word != 0u && in_keepEntries == 0)
   {
     imageStore(in_entryHeads, pixel, uvec4(0u));
   }
