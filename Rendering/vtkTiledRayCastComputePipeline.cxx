@@ -97,14 +97,14 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
 {
   vtkOpenGLState* state = frame.Window->GetState();
   // A later stage of VTK's depth peeling traverses the entries the volume's first stage listed.
-  this->Reusing =
+  const bool reuse =
     frame.PeelStage >= 2 && frame.PeelVolume && frame.PeelVolume == this->EntriesKeptFor;
-  if (!this->BeginFrame(frame, stats, error))
+  if (!this->BeginFrame(frame, reuse, stats, error))
   {
     state->PopFramebufferBindings();
     return false;
   }
-  if (!this->Reusing)
+  if (!reuse)
   {
     vtkTiledRayCastDebugEvent event("ListEntries");
     timers.Start(vtkTiledRayCastPhaseTimers::FirstHit);
@@ -134,7 +134,7 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
   this->Composite(frame, setup);
   timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
 
-  stats->SetDepthPeelingEntriesReused(this->Reusing);
+  stats->SetDepthPeelingEntriesReused(reuse);
   stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
   stats->SetNumberOfRayCastPasses(1);
   stats->GetPassesPerTile().clear();
@@ -355,8 +355,7 @@ bool vtkTiledRayCastComputePipeline::UpdateTargets(
   }
   this->TargetSize[0] = width;
   this->TargetSize[1] = height;
-  this->HeadsKept = false; // new heads, zeros
-  this->EntriesKeptFor = nullptr;
+  this->EntriesKeptFor = nullptr; // new heads, zeros
   this->CountsPending[0] = this->CountsPending[1] = false;
   this->Verified = false;
   return true;
@@ -403,7 +402,7 @@ void vtkTiledRayCastComputePipeline::BindBuffers()
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastComputePipeline::BeginFrame(
-  const Frame& frame, vtkTiledRayCastStatistics* stats, std::string& error)
+  const Frame& frame, bool reuse, vtkTiledRayCastStatistics* stats, std::string& error)
 {
   // The previous frame's counts if they have arrived, else the older ones in the other buffer
   // (waiting for them holds the CPU at most two frames ahead of the GPU), which this frame
@@ -430,7 +429,7 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
   }
   this->CountsBuffer = next;
 
-  if (this->Reusing)
+  if (reuse)
   {
     this->Verifying = false; // the list holds this view: the first stage saw to it
     return true;
@@ -487,15 +486,14 @@ void vtkTiledRayCastComputePipeline::ListEntries(
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_FALSE);
 
-  if (this->HeadsKept)
+  if (this->EntriesKeptFor)
   {
     // The last traversal (a stage of VTK's depth peeling) left the heads for the next draw.
     vtkTiledRayCastComputeShader::ClearImage(this->EntryHeads);
     vtkTiledRayCastComputeShader::Barrier(
       GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
-    this->HeadsKept = false;
+    this->EntriesKeptFor = nullptr;
   }
-  this->EntriesKeptFor = nullptr;
   this->EntryCount.Write(0, sizeof(std::uint32_t));
   this->BindBuffers();
   if (frame.Members.empty())
@@ -629,7 +627,6 @@ void vtkTiledRayCastComputePipeline::Traverse(
   vtkTiledRayCastComputeShader::UnbindImage(ColorImageUnit);
   if (keep)
   {
-    this->HeadsKept = true;
     this->EntriesKeptFor = frame.PeelVolume;
   }
   if (frame.PeelStage > 0)
@@ -790,6 +787,5 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
   this->Verified = false;
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->CountsPending[0] = this->CountsPending[1] = false;
-  this->HeadsKept = false;
   this->EntriesKeptFor = nullptr;
 }

@@ -196,10 +196,12 @@ public:
 
   /**
    * Before the frame: puts the latest counts that have arrived in the statistics, sizes the
-   * entry list from them, and decides whether this frame is verified (FinishEntries). False
-   * with a message when the list cannot grow.
+   * entry list from them, and decides whether this frame is verified (FinishEntries); a frame
+   * that `reuse`s the list of an earlier draw (VTK's depth peeling) neither sizes nor verifies
+   * it. False with a message when the list cannot grow.
    */
-  bool BeginFrame(const Frame& frame, vtkTiledRayCastStatistics* stats, std::string& error);
+  bool BeginFrame(
+    const Frame& frame, bool reuse, vtkTiledRayCastStatistics* stats, std::string& error);
 
   /**
    * Phase 1, the entry list, into the pipeline's own framebuffer (the caller has pushed the
@@ -338,11 +340,9 @@ private:
   float LastDirection[3] = { 0, 0, 0 };
   double LastCoverage = 0;
   // Inside VTK's depth peeling the list serves every draw of the volume's frame: the traversal
-  // leaves the heads (HeadsKept, cleared before the next listing), and the draws after the
-  // first list nothing (Reusing) when the list is that volume's (EntriesKeptFor).
-  bool HeadsKept = false;
+  // leaves the heads as they are for that volume (EntriesKeptFor, null when the traversal set
+  // them back to 0), the draws after the first list nothing, and the next listing clears them.
   const void* EntriesKeptFor = nullptr;
-  bool Reusing = false;
 };
 
 #endif

@@ -136,8 +136,9 @@ void trcEndTile()
 }
 
 // The first node (index + 1) of the pixel's entry list, 0 for none; the head is set back to 0 for
-// the next frame (unless in_keepEntries). A list that lost entries is counted whether or not any of them fit (a ray that
-// lost them all has no list), and here, so that no register holds that through the walk.
+// the next frame (unless in_keepEntries). A list that lost entries is counted whether or not any
+// of them fit (a ray that lost them all has no list), and here, so that no register holds that
+// through the walk.
 uint trcTakeEntries(ivec2 pixel, bool inImage)
 {
   uint word = inImage ? imageLoad(in_entryHeads, pixel).r : 0u;
