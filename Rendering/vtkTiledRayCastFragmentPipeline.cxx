@@ -170,7 +170,8 @@ bool vtkTiledRayCastFragmentPipeline::UpdatePrograms(vtkOpenGLRenderWindow* wind
     "if (lambda < previous.y - in_peelEpsilon)\n"
     "  {\n    discard;\n  }\n"
     "  vec4 lastEntry = texelFetch(in_previousEntry, pixel, 0);\n"
-    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon && key <= trcEntryKey(lastEntry))\n"
+    "  if (abs(lambda - lastEntry.x) <= in_peelEpsilon &&\n"
+    "    (lambda < lastEntry.x || (lambda == lastEntry.x && key <= trcEntryKey(lastEntry))))\n"
     "  {\n    discard;\n  }\n"
     "  lambda = max(lambda, previous.y);\n"
     "  color = texelFetch(in_previousColor, pixel, 0);\n";

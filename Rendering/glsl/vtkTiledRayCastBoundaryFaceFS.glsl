@@ -9,9 +9,10 @@
 // re-enters. Faces are ordered by their exact lambda (written as depth), so a
 // crack's coincident faces re-enter the ray where it left. To never loop on
 // faces that share an edge or a plane at a grazing angle, a face within
-// in_peelEpsilon of the last entry point must also have a larger key
-// ((tet << 2) | face) than the face entered there: each new layer is then
-// strictly after the previous one in (lambda, key) order.
+// in_peelEpsilon of the last entry point must come after the face entered
+// there in (lambda, key) order ((tet << 2) | face): each new layer is then
+// strictly after the previous one. (Not by key alone: a face a hair behind a
+// flat sheet entered before it must still be entered.)
 //
 // Compute pipeline (TRC_ENTRY_LIST): one pass, no depth test, every fragment
 // appended to its pixel's list of entries; the traversal applies the same

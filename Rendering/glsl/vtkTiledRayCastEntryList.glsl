@@ -108,9 +108,12 @@ uint trcNextEntry(uint head, bool first, float exitLambda, float lastLambda, uin
     if (!first)
     {
       // Peeling rules: only faces (the near plane is behind the ray now), at or behind the
-      // exit, strictly after the last entry in (lambda, key) order.
+      // exit, strictly after the last entry in (lambda, key) order. Faces within in_peelEpsilon
+      // of it count as behind it only by that order, whatever their key: a face a hair in
+      // front of a zero-thickness layer's (a flat sheet over a tet's face) is still entered.
       if (isNear || l < exitLambda - in_peelEpsilon ||
-        (abs(l - lastLambda) <= in_peelEpsilon && k <= lastKey))
+        (abs(l - lastLambda) <= in_peelEpsilon &&
+          (l < lastLambda || (l == lastLambda && k <= lastKey))))
       {
         continue;
       }

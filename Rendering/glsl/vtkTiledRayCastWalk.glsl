@@ -26,17 +26,49 @@ int trcSharedFace(uint previous, uvec4 neighborWords)
   return entry;
 }
 
+// Below this |det| / scale^1.5 (det = 6 V, scale the sum of the squared edges from point 0; a
+// regular tet has 0.19) a tet is flat as far as float arithmetic can tell: its face planes
+// nearly coincide, their steps from the ray's point are all rounding noise, and a face of three
+// collinear points has a normal of pure noise. Its exit is then the face the ray passes through.
+const float TRC_FLAT_TET = 1.0e-5;
+
+// Whether the ray through `here` along `dir` passes through face f of t (an edge or corner
+// counts), by the signs of the three edges' moments about the ray (Pluecker): all alike inside.
+// Independent of the face's normal, so a face of collinear points (all three moments of one
+// line, one against the other two) is never passed through.
+// The corners are picked as trcFacePoints lists them, without indexing p by a table (see
+// trcExitStep).
+bool trcRayCrossesFace(TrcTet t, int f, vec3 here, vec3 dir)
+{
+  vec3 a = (f == 0 ? t.p[1] : t.p[0]) - here;
+  vec3 b = (f == 0 ? t.p[2] : (f == 1 ? t.p[3] : (f == 2 ? t.p[1] : t.p[2]))) - here;
+  vec3 c = (f == 0 ? t.p[3] : (f == 1 ? t.p[2] : (f == 2 ? t.p[3] : t.p[1]))) - here;
+  float u = dot(dir, cross(a, b));
+  float v = dot(dir, cross(b, c));
+  float w = dot(dir, cross(c, a));
+  return (u >= 0.0 && v >= 0.0 && w >= 0.0) || (u <= 0.0 && v <= 0.0 && w <= 0.0);
+}
+
 // How far (in lambda) the ray goes in tet t from lambda, entered through face `entry`, and the
 // face it leaves through: the nearest plane it leaves through, never the entry face. Shared by
 // the walk and the traversal of overlapping volumes (vtkTiledRayCastGroupMember.glsl).
 // Distances are measured from the ray's current point, next to the tet, not from its origin on
 // the near plane: in a flat tet, planes a few float steps apart at lambda ~ 0.5 are then told
-// apart (the wrong one skips a tet).
+// apart (the wrong one skips a tet). In a tet flatter than that (TRC_FLAT_TET) the nearest
+// plane means nothing: the face the ray passes through is taken, the nearest plane only where
+// rounding lets the ray pass through none.
 float trcExitStep(TrcTet t, TrcRay ray, float lambda, int entry, out int exitFace)
 {
   vec3 here = ray.origin + lambda * ray.dir;
+  vec3 e1 = t.p[1] - t.p[0];
+  vec3 e2 = t.p[2] - t.p[0];
+  vec3 e3 = t.p[3] - t.p[0];
+  float scale = dot(e1, e1) + dot(e2, e2) + dot(e3, e3);
+  bool flatTet = abs(dot(e1, cross(e2, e3))) <= TRC_FLAT_TET * scale * sqrt(scale);
   float exitStep = 3.4e38;
   exitFace = -1;
+  float nearestStep = 3.4e38;
+  int nearestFace = -1;
   float steepest = -3.4e38;
   int steepestFace = 0;
   for (int f = 0; f < 4; ++f)
@@ -58,12 +90,22 @@ float trcExitStep(TrcTet t, TrcRay ray, float lambda, int entry, out int exitFac
       // Chosen without indexing p by a table: NVIDIA's compiler then keeps p in local
       // memory, not in registers.
       float step = dot((f == 0 ? t.p[1] : t.p[0]) - here, normal) / den;
-      if (step < exitStep)
+      if (step < nearestStep)
+      {
+        nearestStep = step;
+        nearestFace = f;
+      }
+      if (step < exitStep && (!flatTet || trcRayCrossesFace(t, f, here, ray.dir)))
       {
         exitStep = step;
         exitFace = f;
       }
     }
+  }
+  if (exitFace < 0)
+  {
+    exitFace = nearestFace;
+    exitStep = nearestStep;
   }
   if (exitFace < 0)
   {
