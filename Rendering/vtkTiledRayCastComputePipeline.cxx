@@ -425,9 +425,16 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
     {
       this->CountsRead[next].IsWritten(true);
       this->ReadCountsInto(next, stats);
+      read = true;
     }
   }
   this->CountsBuffer = next;
+  if (!read && !this->LastCounts.empty())
+  {
+    // Nothing new since the last counts read (the frame before was verified and read its own):
+    // the statistics show those, as they keep the latest GPU times, rather than zeros.
+    this->ReportCounts(stats);
+  }
 
   if (reuse)
   {
@@ -712,9 +719,26 @@ void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats
 //------------------------------------------------------------------------------
 void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats)
 {
-  std::uint32_t counts[NumberOfRayCounts];
-  this->CountsRead[buffer].Read(0, sizeof(counts), counts);
+  this->LastCounts.resize(NumberOfRayCounts);
+  const std::uint32_t* counts = this->LastCounts.data();
+  this->CountsRead[buffer].Read(
+    0, NumberOfRayCounts * sizeof(std::uint32_t), this->LastCounts.data());
   this->CountsPending[buffer] = false;
+  this->ReportCounts(stats);
+  this->RaysStopped = counts[CountStopped];
+  this->RaysIncomplete = counts[CountIncomplete];
+  this->EntriesAsked = counts[CountEntriesAsked];
+  this->RaysCounted = counts[CountRays];
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastComputePipeline::ReportCounts(vtkTiledRayCastStatistics* stats) const
+{
+  if (this->LastCounts.empty())
+  {
+    return;
+  }
+  const std::uint32_t* counts = this->LastCounts.data();
   stats->SetNumberOfRays(counts[CountRays]);
   stats->SetNumberOfNearPlaneRays(counts[CountNearPlaneRays]);
   stats->SetNumberOfRaysTerminatedEarly(counts[CountTerminatedEarly]);
@@ -726,10 +750,6 @@ void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastS
   stats->SetNumberOfEntries(counts[CountEntriesAsked]);
   stats->SetNumberOfIncompleteRays(counts[CountIncomplete]);
   stats->SetNumberOfMixedRays(counts[CountMixedRays]);
-  this->RaysStopped = counts[CountStopped];
-  this->RaysIncomplete = counts[CountIncomplete];
-  this->EntriesAsked = counts[CountEntriesAsked];
-  this->RaysCounted = counts[CountRays];
 }
 
 //------------------------------------------------------------------------------
@@ -787,5 +807,6 @@ void vtkTiledRayCastComputePipeline::ReleaseGraphicsResources(vtkWindow* window)
   this->Verified = false;
   this->TargetSize[0] = this->TargetSize[1] = 0;
   this->CountsPending[0] = this->CountsPending[1] = false;
+  this->LastCounts.clear();
   this->EntriesKeptFor = nullptr;
 }

@@ -55,6 +55,7 @@
 #include "vtkTiledRayCastStorageBuffer.h"  // For the storage buffers
 #include "vtkType.h"                       // For vtkIdType
 
+#include <cstdint> // For std::uint32_t
 #include <string>  // For std::string
 #include <utility> // For std::pair
 #include <vector>  // For std::vector
@@ -284,6 +285,8 @@ private:
   bool GrowEntries(vtkIdType needed, std::string& error);
 
   void ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats);
+  // The latest counts read into the statistics (frames whose own have not arrived show them).
+  void ReportCounts(vtkTiledRayCastStatistics* stats) const;
 
   static Replacements ProgramReplacements(const Replacements& common, bool group);
   // `source` with the replacements made in order (every occurrence of each tag).
@@ -324,7 +327,8 @@ private:
   vtkTiledRayCastStorageBuffer RayCounts[2];
   vtkTiledRayCastStorageBuffer CountsRead[2];
   bool CountsPending[2] = { false, false };
-  int CountsBuffer = 0; // this frame's
+  std::vector<std::uint32_t> LastCounts; // the latest read, empty before the first
+  int CountsBuffer = 0;                  // this frame's
   vtkIdType EntryCapacity = 0;
   int TargetSize[2] = { 0, 0 };
   vtkIdType RaysStopped = 0;

@@ -15,7 +15,8 @@
 // grown for the next frame. Each case checked against the exact reference:
 //   1. the comb from the front, far (two layers), then across its six teeth, close: a camera
 //      jump, so a verified frame: exact, no warning; then a camera that moves in small steps
-//      from the front to across the teeth, coming closer: no ray incomplete, exact;
+//      from the front to across the teeth, coming closer: no ray incomplete, exact, and every
+//      frame's statistics hold the latest counts that arrived (none zero);
 //   2. a stack of 16 thin slabs seen nearly edge-on, then turned by 25 degrees (several slabs
 //      per ray), with SynchronousStatistics off: one warning exactly when rays were
 //      incomplete, and exact frames after;
@@ -75,6 +76,7 @@ bool CombRounds(int argc, char* argv[])
   scene.Renderer->ResetCameraClippingRange();
   scene.Window->Render();
   vtkIdType incomplete = 0;
+  int framesWithoutCounts = 0;
   for (int step = 0; step < 9; ++step)
   {
     camera->Azimuth(10);
@@ -82,7 +84,11 @@ bool CombRounds(int argc, char* argv[])
     scene.Renderer->ResetCameraClippingRange();
     scene.Window->Render();
     incomplete += scene.Mapper->GetStatistics()->GetNumberOfIncompleteRays();
+    // The latest counts that arrived, never zeros: the first of these frames follows a verified
+    // one, which read its own counts, so none is pending when it begins.
+    framesWithoutCounts += scene.Mapper->GetStatistics()->GetNumberOfRays() > 0 ? 0 : 1;
   }
+  ok = Expect(framesWithoutCounts == 0, "every frame's statistics hold counts") && ok;
   ok = trctest::CheckAgainstReference(
          scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "comb, camera moved") &&
     ok;
