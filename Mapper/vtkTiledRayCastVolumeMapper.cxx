@@ -198,6 +198,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";
   os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize << "\n";
   os << indent << "SynchronousStatistics: " << this->SynchronousStatistics << "\n";
+  os << indent << "WarnAboutDegenerateCells: " << this->WarnAboutDegenerateCells << "\n";
   os << indent << "Statistics:\n";
   this->Statistics->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ValidationReport:\n";

@@ -406,6 +406,19 @@ public:
 
   ///@{
   /**
+   * When on (the default), a warning tells of every problem the mesh builder finds in the input
+   * (GetValidationReport()). Off, degenerate (zero-volume) tetrahedra and duplicate points are
+   * counted in the report but not warned about: a mesh cut exactly at planes has them wherever a
+   * plane passes through or next to its points (ParaView's plugin turns this off for the pieces
+   * it cuts at the ranks' partition planes); the other problems are still warned about.
+   */
+  vtkSetMacro(WarnAboutDegenerateCells, bool);
+  vtkGetMacro(WarnAboutDegenerateCells, bool);
+  vtkBooleanMacro(WarnAboutDegenerateCells, bool);
+  ///@}
+
+  ///@{
+  /**
    * Composite input. Besides a vtkUnstructuredGridBase, the input may be any vtkDataObjectTree
    * (vtkMultiBlockDataSet, vtkPartitionedDataSet, vtkPartitionedDataSetCollection) of
    * unstructured grids: `mapper->SetInputConnection(multiblockReader->GetOutputPort())` or
@@ -480,6 +493,7 @@ protected:
   int PreIntegrationTableScalarSize = 0;
   int PreIntegrationTableLengthSize = 0;
   bool SynchronousStatistics = false;
+  bool WarnAboutDegenerateCells = true;
 
   vtkTiledRayCastStatistics* Statistics;
   vtkTetMeshValidationReport* ValidationReport;

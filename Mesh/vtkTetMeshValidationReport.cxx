@@ -81,19 +81,23 @@ bool vtkTetMeshValidationReport::HasDefects() const
   return this->NumberOfSplitCells > 0 || this->NumberOfIgnoredCells > 0 ||
     this->NumberOfInvalidCells > 0 || this->NumberOfInvertedTetrahedra > 0 ||
     this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
-    this->NumberOfOverlappingTetrahedra > 0 ||
-    this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
-    this->NumberOfNonFiniteScalars > 0;
+    this->NumberOfOverlappingTetrahedra > 0 || this->NumberOfCrackFaces > 0 ||
+    this->NumberOfDuplicatePoints > 0 || this->NumberOfNonFiniteScalars > 0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTetMeshValidationReport::HasProblems() const
 {
+  return this->HasProblemsBesidesDegeneracy() || this->NumberOfDegenerateTetrahedra > 0 ||
+    this->NumberOfDuplicatePoints > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTetMeshValidationReport::HasProblemsBesidesDegeneracy() const
+{
   return this->NumberOfIgnoredCells > 0 || this->NumberOfInvalidCells > 0 ||
-    this->NumberOfDegenerateTetrahedra > 0 || this->NumberOfNonManifoldFaces > 0 ||
-    this->NumberOfOverlappingTetrahedra > 0 ||
-    this->NumberOfCrackFaces > 0 || this->NumberOfDuplicatePoints > 0 ||
-    this->NumberOfNonFiniteScalars > 0;
+    this->NumberOfNonManifoldFaces > 0 || this->NumberOfOverlappingTetrahedra > 0 ||
+    this->NumberOfCrackFaces > 0 || this->NumberOfNonFiniteScalars > 0;
 }
 
 //------------------------------------------------------------------------------
@@ -190,8 +194,7 @@ void vtkTetMeshValidationReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfInvertedTetrahedra: " << this->NumberOfInvertedTetrahedra << "\n";
   os << indent << "NumberOfDegenerateTetrahedra: " << this->NumberOfDegenerateTetrahedra << "\n";
   os << indent << "NumberOfNonManifoldFaces: " << this->NumberOfNonManifoldFaces << "\n";
-  os << indent << "NumberOfOverlappingTetrahedra: " << this->NumberOfOverlappingTetrahedra
-     << "\n";
+  os << indent << "NumberOfOverlappingTetrahedra: " << this->NumberOfOverlappingTetrahedra << "\n";
   os << indent << "NumberOfCrackFaces: " << this->NumberOfCrackFaces << "\n";
   os << indent << "NumberOfDuplicatePoints: " << this->NumberOfDuplicatePoints << "\n";
   os << indent << "NumberOfNonFiniteScalars: " << this->NumberOfNonFiniteScalars << "\n";

@@ -159,10 +159,17 @@ public:
   /**
    * True when the input has a problem its user should hear of: ignored or invalid cells,
    * degenerate tetrahedra, non-manifold or crack faces, overlapping tetrahedra, duplicate points
-   * or non-finite scalars. Split cells and reoriented (inverted) tetrahedra are normal service: counted, not a problem.
-   * The mapper warns (once per build) only when this is true.
+   * or non-finite scalars. Split cells and reoriented (inverted) tetrahedra are normal service:
+   * counted, not a problem. The mapper warns (once per build) only when this is true.
    */
   bool HasProblems() const;
+
+  /**
+   * HasProblems() but for degenerate tetrahedra and duplicate points, which a mesh cut exactly
+   * at planes has wherever a plane passes through or next to its points (what the mapper warns
+   * about with vtkTiledRayCastVolumeMapper::WarnAboutDegenerateCells off).
+   */
+  bool HasProblemsBesidesDegeneracy() const;
 
   /**
    * A one-paragraph description of the mesh and of every defect found, for messages and logs.

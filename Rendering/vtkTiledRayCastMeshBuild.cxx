@@ -129,7 +129,10 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   {
     self->GetValidationReport()->DeepCopy(report);
     this->ReportedTime = report->GetMTime();
-    if (report->GetUsable() && report->HasProblems())
+    const bool problems = self->GetWarnAboutDegenerateCells()
+      ? report->HasProblems()
+      : report->HasProblemsBesidesDegeneracy();
+    if (report->GetUsable() && problems)
     {
       vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
     }

@@ -12,7 +12,8 @@
 // of the scene (an opaque cone) still renders: an empty grid, a grid without scalars, a grid of
 // triangles only, a mesh larger than the texture limits, a blend mode the mapper does not do.
 // NaN scalars are not an error: the tetrahedra touching them are transparent, as the exact
-// reference renderer has them. A mapper whose input is removed after a good frame says it drew
+// reference renderer has them. Degenerate tetrahedra are warned about unless
+// WarnAboutDegenerateCells is off. A mapper whose input is removed after a good frame says it drew
 // nothing in the next one (vtkVolume never calls its Render() without an input).
 #include "TiledRayCastTestScene.h"
 
@@ -355,6 +356,53 @@ bool NaNScalars(vtkUnstructuredGrid* spx)
   return ok;
 }
 
+// Degenerate (zero-volume) tetrahedra: spx with one more, flat, beside it. Warned about by
+// default; with WarnAboutDegenerateCells off (what ParaView's plugin sets for the pieces it cuts
+// at the ranks' planes, which have them wherever a plane grazes a point) counted, not warned
+// about. Both frames render spx exactly.
+bool DegenerateCells(vtkUnstructuredGrid* spx)
+{
+  bool ok = true;
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->DeepCopy(spx);
+  double bounds[6];
+  spx->GetBounds(bounds);
+  vtkPoints* points = grid->GetPoints();
+  const double z = bounds[5] + 0.5 * (bounds[5] - bounds[4]);
+  vtkIdType flat[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    // Four points of one plane, over the mesh: a tetrahedron of zero volume.
+    flat[i] = points->InsertNextPoint(bounds[i % 2], bounds[2 + i / 2], z);
+    grid->GetPointData()->GetScalars()->InsertNextTuple1(
+      grid->GetPointData()->GetScalars()->GetComponent(0, 0));
+  }
+  grid->InsertNextCell(VTK_TETRA, 4, flat);
+  double range[2];
+  spx->GetPointData()->GetScalars()->GetRange(range);
+  for (bool warn : { true, false })
+  {
+    trctest::WatchedVolume scene(
+      grid, trctest::MakeProperty(range[0], range[1], 0.1 * grid->GetLength()), 96);
+    scene.Mapper->SetWarnAboutDegenerateCells(warn);
+    scene.Window->Render();
+    const std::string label = warn ? "degenerate, warned" : "degenerate, not warned";
+    ok = Expect(scene.Mapper->GetValidationReport()->GetNumberOfDegenerateTetrahedra() == 1,
+           label + ": counted") &&
+      ok;
+    ok = Expect(warn ? scene.Warnings->Count == 1 &&
+               scene.Warnings->Text.find("degenerate") != std::string::npos
+                     : scene.Warnings->Count == 0,
+           label + ": " + (warn ? "one warning" : "no warning") + " (got: " + scene.Warnings->Text +
+             ")") &&
+      ok;
+    ok = trctest::CheckAgainstReference(
+           scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), label.c_str()) &&
+      ok;
+  }
+  return ok;
+}
+
 // Normal service is not a warning: spx with every other tetrahedron inverted (two points
 // swapped: the builder reorients them), and a grid of hexahedra, split into tetrahedra. Both
 // render silently; the report counts what was done.
@@ -447,7 +495,7 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
   }
   bool ok = true;
   for (auto check : { RefusedInputs, SevenClippingPlanes, ShadingWarnings, VolumetricPeeling,
-         NoInputAfterFrame, NaNScalars, NormalService, TranslucentGeometry })
+         NoInputAfterFrame, NaNScalars, DegenerateCells, NormalService, TranslucentGeometry })
   {
     ok = check(spx) && ok;
   }
