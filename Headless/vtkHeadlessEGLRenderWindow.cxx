@@ -126,6 +126,33 @@ int vtkHeadlessEGLRenderWindow::GetNumberOfDevices()
 }
 
 //------------------------------------------------------------------------------
+int vtkHeadlessEGLRenderWindow::GetNumberOfGPUDevices()
+{
+  int count = 0;
+  for (const auto& device : vtkHeadlessEGLDevices::QueryDevices())
+  {
+    count += device.Software ? 0 : 1;
+  }
+  return count;
+}
+
+//------------------------------------------------------------------------------
+int vtkHeadlessEGLRenderWindow::GetGPUDeviceIndex(int ordinal)
+{
+  const std::vector<vtkHeadlessEGLDevices::DeviceInfo> devices =
+    vtkHeadlessEGLDevices::QueryDevices();
+  int gpu = 0;
+  for (size_t index = 0; index < devices.size(); ++index)
+  {
+    if (!devices[index].Software && gpu++ == ordinal)
+    {
+      return static_cast<int>(index);
+    }
+  }
+  return -1;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkHeadlessEGLRenderWindow::GetDeviceDescriptions()
 {
   return vtkHeadlessEGLDevices::DescribeDevices();

@@ -119,6 +119,17 @@ public:
    */
   int GetNumberOfDevices() override;
 
+  ///@{
+  /**
+   * The GPUs among the EGL devices (software devices left out): how many there are, and the
+   * device index (for SetDeviceIndex()) of the one at `ordinal` (0 to that number - 1), or -1
+   * for an ordinal out of range. A process of several on one machine (an MPI rank) spreads them
+   * over the GPUs by its rank modulo their number.
+   */
+  static int GetNumberOfGPUDevices();
+  static int GetGPUDeviceIndex(int ordinal);
+  ///@}
+
   /**
    * One line per EGL device: its index, whether it is a GPU or a software device, and what EGL
    * tells about it (DRM node, CUDA device number, device extensions).

@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cctype>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <mutex>
 #include <set>
@@ -263,7 +264,10 @@ bool vtkHeadlessObjectFactory::HasUsableDisplay()
 {
 #if TILEDRAYCAST_HEADLESS_HAS_X
   const char* value = std::getenv("DISPLAY");
-  if (!value || !*value)
+  // An X display name has a colon ([host]:display[.screen]). ParaView's --displays puts each
+  // rank's entry in DISPLAY, and with EGL those are device indices ("0", "1"): Xlib would read
+  // one as a host name and wait on a TCP connection to it for minutes.
+  if (!value || !std::strchr(value, ':'))
   {
     return false;
   }

@@ -36,6 +36,24 @@ int TestHeadlessEGLWindow(int argc, char* argv[])
             << window->GetDeviceIndexInUse() << "\n"
             << vtkHeadlessEGLRenderWindow::GetDeviceDescriptions();
 
+  // The GPUs among the devices (what a ParaView rank picks from by its local rank): each
+  // ordinal names a device, the one past the last none.
+  const int gpus = vtkHeadlessEGLRenderWindow::GetNumberOfGPUDevices();
+  bool gpuIndices = gpus <= window->GetNumberOfDevices() &&
+    vtkHeadlessEGLRenderWindow::GetGPUDeviceIndex(gpus) == -1 &&
+    vtkHeadlessEGLRenderWindow::GetGPUDeviceIndex(-1) == -1;
+  for (int ordinal = 0; ordinal < gpus; ++ordinal)
+  {
+    const int index = vtkHeadlessEGLRenderWindow::GetGPUDeviceIndex(ordinal);
+    gpuIndices = gpuIndices && index >= 0 && index < window->GetNumberOfDevices();
+  }
+  std::cout << gpus << " GPU device(s)\n";
+  if (!gpuIndices)
+  {
+    std::cerr << "GetGPUDeviceIndex() does not agree with GetNumberOfGPUDevices()\n";
+    return EXIT_FAILURE;
+  }
+
   int major = 0;
   int minor = 0;
   window->GetOpenGLVersion(major, minor);

@@ -101,6 +101,13 @@ int TestHeadlessFactory(int, char*[])
   Expect(!vtkHeadlessObjectFactory::HasUsableDisplay() &&
       NewWindowClass() == "vtkHeadlessEGLRenderWindow",
     "DISPLAY=:98765 (no server): EGL window");
+  // ParaView's --displays sets DISPLAY to an EGL device index: not an X display (no colon),
+  // never a TCP connection attempt to a host named "0".
+  setenv("DISPLAY", "0", 1);
+  Expect(!vtkHeadlessObjectFactory::HasUsableDisplay() &&
+      NewWindowClass() == "vtkHeadlessEGLRenderWindow",
+    "DISPLAY=0 (ParaView's --displays, an EGL device): EGL window");
+  setenv("DISPLAY", ":98765", 1);
   Expect(std::strcmp(vtkHeadlessObjectFactory::GetResolvedWindowClassName(),
            "vtkHeadlessEGLRenderWindow") == 0,
     "GetResolvedWindowClassName() agrees");
