@@ -10,12 +10,17 @@
 =========================================================================*/
 #include "vtkTiledRayCastVolumeRepresentation.h"
 
+#include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODVolume.h"
+#include "vtkPVRenderView.h"
 #include "vtkScalarsToColors.h"
 #include "vtkTiledRayCastStatistics.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
+#include "vtkVolumeRepresentationPreprocessor.h"
 
 vtkStandardNewMacro(vtkTiledRayCastVolumeRepresentation);
 
@@ -103,11 +108,37 @@ double vtkTiledRayCastVolumeRepresentation::GetTiledRayCastMaximumError()
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastSplitBoundaryCells(int split)
+{
+  if (this->TiledRayCastSplitBoundaryCells != split)
+  {
+    this->TiledRayCastSplitBoundaryCells = split;
+    // The redistribution is part of the data update.
+    this->MarkModified();
+  }
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeRepresentation::GetTiledRayCastStatistics()
 {
   vtkTiledRayCastStatistics* statistics = this->TiledRayCastMapper->GetStatistics();
-  this->StatisticsSummary = statistics->GetRendered() ? statistics->GetSummary() : std::string();
+  this->StatisticsSummary = statistics->GetRendered()
+    ? statistics->GetSummary() + "; integration: " +
+      vtkTiledRayCastVolumeMapper::GetIntegrationModeAsString(statistics->GetIntegrationMode())
+    : std::string();
   return this->StatisticsSummary.c_str();
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastSynchronousStatistics(int synchronous)
+{
+  this->TiledRayCastMapper->SetSynchronousStatistics(synchronous != 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeRepresentation::GetTiledRayCastSynchronousStatistics()
+{
+  return this->TiledRayCastMapper->GetSynchronousStatistics() ? 1 : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -129,8 +160,57 @@ void vtkTiledRayCastVolumeRepresentation::UpdateMapperParameters()
 }
 
 //------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  auto* piece = vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
+  if (controller && controller->GetNumberOfProcesses() > 1 && piece &&
+    piece->GetNumberOfCells() > 0)
+  {
+    vtkNew<vtkCellArray> cells;
+    cells->DeepCopy(piece->GetCells());
+    piece->SetCells(piece->GetCellTypesArray(), cells);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastVolumeRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* requestType, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (!this->Superclass::ProcessViewRequest(requestType, inInfo, outInfo))
+  {
+    return 0;
+  }
+  if (requestType == vtkPVView::REQUEST_UPDATE() &&
+    this->GetActiveVolumeMapper() == this->TiledRayCastMapper &&
+    this->TiledRayCastSplitBoundaryCells)
+  {
+    vtkPVRenderView::SetRedistributionModeToSplitBoundaryCells(inInfo, this);
+  }
+  if (requestType == vtkPVView::REQUEST_UPDATE())
+  {
+    // The cut at the partition planes leaves degenerate cells and duplicate points wherever a
+    // plane passes through or next to a point: ours, not the user's, and not worth a warning from
+    // every rank (the validation report still counts them).
+    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+    const bool cut =
+      this->TiledRayCastSplitBoundaryCells && controller && controller->GetNumberOfProcesses() > 1;
+    this->TiledRayCastMapper->SetWarnAboutDegenerateCells(!cut);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TiledRayCastMapper: " << this->TiledRayCastMapper.GetPointer() << "\n";
+  os << indent << "TiledRayCastSplitBoundaryCells: " << this->TiledRayCastSplitBoundaryCells
+     << "\n";
 }
