@@ -12,6 +12,7 @@ packages=(
   xvfb xauth                           # X server for the tests that use VTK's X window
   tetgen libtet1.5-dev                 # TetGen for the optional meshing module and the ladder
   xz-utils                             # Module/bundle-gpu.sh compresses the GPU bundle
+  openmpi-bin                          # mpirun: ParaView's ranks in the MPI tests (ParaView/Testing)
 )
 
 missing=()

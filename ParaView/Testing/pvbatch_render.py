@@ -1,13 +1,21 @@
 """Renders a mesh in ParaView's Volume representation and writes what the reference needs.
 
-Run by pvbatch (ParaView 5.11) from TestParaViewPlugin.py and from ParaView/benchmark.sh:
-  pvbatch pvbatch_render.py --plugin TiledRayCast.so --mesh mesh.vtu --output prefix [options]
+Run by pvbatch (ParaView 5.11), alone or under mpirun, from TestParaViewPlugin.py,
+TestParaViewMPI.py and ParaView/benchmark.sh:
+  [mpirun -np N] pvbatch pvbatch_render.py --plugin TiledRayCast.so --mesh mesh.vtu|.pvtu
+                                           --output prefix [options]
 Writes prefix.png (the view, exactly --size pixels) and prefix.json: camera, background, colour
 map and opacity function as ParaView set them up, the unit distance, frame times, the mapper's
-statistics. --mesh mixed builds a mixed-cell mesh instead (ParaView's Wavelet, clipped: hexahedra,
-wedges, pyramids, tetrahedra, with a vector array "vec" = (20 x, RTData, z) coloured by its Y
-component) and also writes prefix_tets.vtu, the same mesh split into tetrahedra
-as ParaView's representation splits it, for the reference.
+statistics, the number of ranks and the cells each rank read. --mesh mixed builds a mixed-cell
+mesh instead (ParaView's Wavelet, clipped: hexahedra, wedges, pyramids, tetrahedra, with a vector
+array "vec" = (20 x, RTData, z) coloured by its Y component) and also writes prefix_tets.vtu, the
+same mesh split into tetrahedra as ParaView's representation splits it, for the reference. A
+.pvtu is read by ParaView's partitioned reader, each rank its own pieces.
+
+Under MPI ParaView composites the ranks' images after its FXAA pass is switched off for them and
+applies FXAA to the composited image: volume silhouettes, sharp against the transparent background
+of the composite, are then blurred (up to 10/255 on comb6teeth, the same for every mapper), which a
+single rank never does to a volume. --fxaa off (the default here) renders without it.
 """
 import argparse
 import json
@@ -18,9 +26,12 @@ from paraview.simple import (
     Calculator,
     Clip,
     ColorBy,
+    ProgrammableFilter,
+    RedistributeDataSet,
     GetColorTransferFunction,
     GetOpacityTransferFunction,
     GetActiveViewOrCreate,
+    Hide,
     LoadPlugin,
     Render,
     SaveData,
@@ -28,9 +39,11 @@ from paraview.simple import (
     Show,
     Tetrahedralize,
     Wavelet,
+    XMLPartitionedUnstructuredGridReader,
     XMLUnstructuredGridReader,
 )
 from paraview import servermanager
+from paraview.modules.vtkRemotingCore import vtkProcessModule
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -47,6 +60,23 @@ parser.add_argument("--frames", type=int, default=0,
                     help="frames timed after the first, the camera turning 360/frames degrees each")
 parser.add_argument("--azimuth", type=float, default=30.0)
 parser.add_argument("--elevation", type=float, default=20.0)
+parser.add_argument("--background", default="0.1,0.1,0.15", help="r,g,b")
+parser.add_argument("--fxaa", choices=("on", "off"), default="off",
+                    help="ParaView's FXAA (its default is on; see the module's description)")
+parser.add_argument("--use-data-partitions", action="store_true",
+                    help="render the pieces where the reader put them (Volume representation's "
+                         "UseDataPartitions), no redistribution")
+parser.add_argument("--split-boundary-cells", type=int, choices=(0, 1), default=1,
+                    help="the representation's TiledRayCastSplitBoundaryCells")
+parser.add_argument("--time-redistribution", action="store_true",
+                    help="also time ParaView's RedistributeDataSet filter (cells split at the "
+                         "partition planes, as the view redistributes them) on its own")
+parser.add_argument("--synchronous-statistics", action="store_true",
+                    help="the representation's TiledRayCastSynchronousStatistics: every frame "
+                         "waits for its GPU timers and counts (frame_statistics then per frame)")
+parser.add_argument("--empty-view", action="store_true",
+                    help="time the --frames frames with the volume hidden: what ParaView's view, "
+                         "its compositing and this script cost a frame, apart from any mapper")
 args = parser.parse_args()
 
 LoadPlugin(args.plugin, remote=False, ns=globals())
@@ -69,12 +99,55 @@ if args.mesh == "mixed":
     # Split as the representation does (vtkVolumeRepresentationPreprocessor: the same triangle
     # filter as Tetrahedralize), for the reference outside ParaView.
     SaveData(args.output + "_tets.vtu", proxy=Tetrahedralize(Input=source))
+elif args.mesh.endswith(".pvtu"):
+    source = XMLPartitionedUnstructuredGridReader(FileName=[args.mesh])
+    types = None
 else:
     source = XMLUnstructuredGridReader(FileName=[args.mesh])
     types = None
+start = time.perf_counter()
 source.UpdatePipeline()
+read_s = time.perf_counter() - start
 info = source.GetDataInformation()
-array = args.array or ("vec" if args.mesh == "mixed" else source.PointData.keys()[0])
+ranks = vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+# The cells each rank read, before any redistribution (each rank's own pieces of a .pvtu),
+# gathered on rank 0 by a programmable filter that runs on every rank.
+RANK_CELLS = """
+from vtkmodules.vtkCommonCore import vtkIdTypeArray
+from vtkmodules.vtkParallelCore import vtkMultiProcessController
+controller = vtkMultiProcessController.GetGlobalController()
+mine = vtkIdTypeArray()
+mine.InsertNextValue(self.GetInput().GetNumberOfCells())
+everyone = vtkIdTypeArray()
+controller.Gather(mine, everyone, 0)
+everyone.SetName("RankCells")
+self.GetOutput().GetFieldData().AddArray(everyone)
+"""
+COPY_CELLS = """
+from vtkmodules.vtkCommonDataModel import vtkCellArray
+grid = self.GetInput()
+out = self.GetOutput()
+out.ShallowCopy(grid)
+cells = vtkCellArray()
+cells.DeepCopy(grid.GetCells())
+out.SetCells(grid.GetCellTypesArray(), cells)
+"""
+ranks_cells = None
+if ranks > 1:
+    counter = ProgrammableFilter(Input=source, OutputDataSetType="vtkPolyData", Script=RANK_CELLS)
+    counts = servermanager.Fetch(counter, 0).GetFieldData().GetArray("RankCells")
+    ranks_cells = [int(counts.GetValue(i)) for i in range(counts.GetNumberOfTuples())]
+def first_varying_array(proxy):
+    """The first point array whose values vary: a constant one (post_tets6's Density) would
+    make the default opacity ramp zero everywhere, an empty image."""
+    for name in proxy.PointData.keys():
+        lo, hi = proxy.PointData[name].GetRange(-1)
+        if hi > lo:
+            return name
+    return proxy.PointData.keys()[0]
+
+
+array = args.array or ("vec" if args.mesh == "mixed" else first_varying_array(source))
 component = 1 if args.mesh == "mixed" else -1  # the Y component of "vec", or the magnitude
 lo, hi = source.PointData[array].GetRange(component)
 b = info.GetBounds()
@@ -83,9 +156,10 @@ diagonal = ((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2) ** 0.5
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [args.size, args.size]
 view.OrientationAxesVisibility = 0
+view.UseFXAA = 1 if args.fxaa == "on" else 0
 if hasattr(view, "UseColorPaletteForBackground"):
     view.UseColorPaletteForBackground = 0
-view.Background = [0.1, 0.1, 0.15]
+view.Background = [float(c) for c in args.background.split(",")]
 display = Show(source, view)
 display.SetRepresentationType("Volume")
 if component >= 0:
@@ -99,6 +173,10 @@ if args.smooth:
 opacity = GetOpacityTransferFunction(array)
 opacity.RescaleTransferFunction(lo, hi)
 display.SelectMapper = args.mapper
+display.UseDataPartitions = 1 if args.use_data_partitions else 0
+display.TiledRayCastSplitBoundaryCells = args.split_boundary_cells
+if args.synchronous_statistics:
+    display.TiledRayCastSynchronousStatistics = 1
 display.ScalarOpacityUnitDistance = args.unit_fraction * diagonal
 
 view.ResetCamera()
@@ -121,17 +199,41 @@ camera_state = {
 SaveScreenshot(args.output + ".png", view, ImageResolution=[args.size, args.size],
                TransparentBackground=0)
 
+if args.empty_view:
+    Hide(source, view)
+def mapper_statistics():
+    """Our mapper's summary of the frame just drawn (rank 0's), or None."""
+    if args.empty_view or not display.SMProxy.GetProperty("TiledRayCastStatistics"):
+        return None
+    display.SMProxy.UpdatePropertyInformation()
+    return display.SMProxy.GetProperty("TiledRayCastStatistics").GetElement(0)
+
+
 times = []
+frame_statistics = []
 for _ in range(args.frames):
     camera.Azimuth(360.0 / args.frames)
     start = time.perf_counter()
     Render(view)
     times.append(time.perf_counter() - start)
+    # Read after the clock stopped: what each timed frame did, for the slow ones.
+    frame_statistics.append(mapper_statistics())
 
-display.SMProxy.UpdatePropertyInformation()
-statistics = None
-if display.SMProxy.GetProperty("TiledRayCastStatistics"):
-    statistics = display.SMProxy.GetProperty("TiledRayCastStatistics").GetElement(0)
+redistribution_s = None
+if args.time_redistribution and ranks > 1:
+    # The cells copied first, as the plugin's representation copies them (ParaView 5.11's
+    # redistribution crashes on three or more ranks on its XML readers' cell arrays), then
+    # redistributed as the view redistributes them for the plugin: split at the planes.
+    copied = ProgrammableFilter(Input=source, OutputDataSetType="vtkUnstructuredGrid",
+                                Script=COPY_CELLS)
+    copied.UpdatePipeline()
+    redistributed = RedistributeDataSet(Input=copied)
+    redistributed.BoundaryMode = "Split cells"
+    start = time.perf_counter()
+    redistributed.UpdatePipeline()
+    redistribution_s = time.perf_counter() - start
+
+statistics = mapper_statistics()
 
 # The colour map as ParaView evaluates it (the client-side object is the one rendered in a
 # built-in session), sampled at the centre of each step, so the reference can check its own.
@@ -165,13 +267,22 @@ result = {
     "vector_mode": lut.GetProperty("VectorMode").GetData(),
     "vector_component": int(lut.VectorComponent),
     "opacity_points": list(opacity.Points),
+    "ranks": ranks,
+    "ranks_cells": ranks_cells,
+    "cells": info.GetNumberOfCells(),
+    "fxaa": args.fxaa,
+    "use_data_partitions": args.use_data_partitions,
+    "split_boundary_cells": args.split_boundary_cells,
+    "read_s": read_s,
+    "redistribution_s": redistribution_s,
     "first_frame_s": first,
     "frame_s": times,
     "statistics": statistics,
+    "frame_statistics": frame_statistics,
 }
 with open(args.output + ".json", "w") as f:
     json.dump(result, f, indent=1)
-print("rendered %s with %s: first frame %.3f s%s" % (args.mesh, args.mapper, first,
+print("rendered %s with %s on %d rank(s): first frame %.3f s%s" % (args.mesh, args.mapper, ranks, first,
       ", then %.3f s a frame (median of %d)" % (sorted(times)[len(times) // 2], len(times))
       if times else ""))
 if statistics:
