@@ -25,9 +25,28 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <thread>
+
+#ifdef __linux__
+#include <sched.h>
+#endif
 
 namespace
 {
+// How many cores this process may run on (its CPU affinity), or 0 where that is not known.
+int AllowedCores()
+{
+#ifdef __linux__
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof(set), &set) == 0)
+  {
+    return CPU_COUNT(&set);
+  }
+#endif
+  return 0;
+}
+
 // A non-negative integer, or -1.
 int ParseIndex(const char* text)
 {
@@ -167,6 +186,16 @@ void vtkHeadlessPVRenderView::SetUpHeadlessWindow()
     vtkWarningMacro("Rank " << rank << " renders on the CPU (" << processWindow->GetGLRenderer()
                             << ") although this machine has " << gpus << " EGL GPU device(s): "
                             << vtkHeadlessEGLRenderWindow::GetDeviceDescriptions());
+  }
+  const int cores = AllowedCores();
+  if (platform == "device" && cores == 1 && std::thread::hardware_concurrency() > 1)
+  {
+    // Open MPI binds each rank to one core when there are two ranks or fewer: the GPU driver's
+    // threads then share it with Python and IceT, and frames stall (on an H100, 2 ranks:
+    // 113 ms a frame bound, 13 ms not; docs/parallel.md).
+    vtkWarningMacro("Rank " << rank << " renders on a GPU but may run on one core only "
+                            << "(bound by mpirun?): frames stall. Start mpirun with "
+                            << "--bind-to none.");
   }
 }
 
