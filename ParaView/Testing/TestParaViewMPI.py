@@ -35,11 +35,9 @@ import subprocess
 import sys
 import time
 
-from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPlane
+from vtkmodules.vtkCommonDataModel import vtkPlane
 from vtkmodules.vtkFiltersExtraction import vtkExtractCells
 from vtkmodules.vtkFiltersGeneral import vtkTableBasedClipDataSet
-from vtkmodules.vtkIOImage import vtkPNGReader
 from vtkmodules.vtkIOParallelXML import vtkXMLPUnstructuredGridWriter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
 from vtkmodules.vtkCommonCore import vtkIdList
@@ -136,26 +134,10 @@ class Runner:
         return found
 
 
-def load_rgb(path):
-    png = vtkPNGReader()
-    png.SetFileName(path)
-    png.Update()
-    image = png.GetOutput()
-    source = image.GetPointData().GetScalars()
-    rgb = vtkUnsignedCharArray()
-    rgb.SetNumberOfComponents(3)
-    rgb.SetNumberOfTuples(source.GetNumberOfTuples())
-    for c in range(3):
-        rgb.CopyComponent(c, source, c)
-    out = vtkImageData()
-    out.SetDimensions(image.GetDimensions())
-    out.GetPointData().SetScalars(rgb)
-    return out
-
-
 def difference(a, b):
     stats = [0.0, 0.0, 0.0]
-    if not vtkTetReferenceRenderer.CompareImages(load_rgb(a + ".png"), load_rgb(b + ".png"), stats):
+    if not vtkTetReferenceRenderer.CompareImages(
+            single.load_rgb(a + ".png"), single.load_rgb(b + ".png"), stats):
         raise RuntimeError("%s and %s cannot be compared" % (a, b))
     return stats
 

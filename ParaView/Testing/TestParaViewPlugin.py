@@ -133,6 +133,25 @@ def make_property(result):
     return prop, worst
 
 
+def load_rgb(path):
+    """A screenshot's RGB only (ParaView may write RGBA), as an image to compare."""
+    png = vtkPNGReader()
+    png.SetFileName(path)
+    png.Update()
+    image = png.GetOutput()
+    source = image.GetPointData().GetScalars()
+    rgb = vtkUnsignedCharArray()
+    rgb.SetName("RGB")
+    rgb.SetNumberOfComponents(3)
+    rgb.SetNumberOfTuples(source.GetNumberOfTuples())
+    for c in range(3):
+        rgb.CopyComponent(c, source, c)
+    out = vtkImageData()
+    out.SetDimensions(image.GetDimensions())
+    out.GetPointData().SetScalars(rgb)
+    return out
+
+
 def compare(output, result, mesh_file):
     reader = vtkXMLUnstructuredGridReader()
     reader.SetFileName(mesh_file)
@@ -166,21 +185,7 @@ def compare(output, result, mesh_file):
     expected = vtkImageData()
     vtkTetReferenceRenderer.ConvertToUnsignedChar(
         reference.GetOutput(), result["background"], expected)
-    png = vtkPNGReader()
-    png.SetFileName(output + ".png")
-    png.Update()
-    # The screenshot's RGB only (ParaView may write RGBA).
-    image = png.GetOutput()
-    source = image.GetPointData().GetScalars()
-    rgb = vtkUnsignedCharArray()
-    rgb.SetName("RGB")
-    rgb.SetNumberOfComponents(3)
-    rgb.SetNumberOfTuples(source.GetNumberOfTuples())
-    for c in range(3):
-        rgb.CopyComponent(c, source, c)
-    actual = vtkImageData()
-    actual.SetDimensions(image.GetDimensions())
-    actual.GetPointData().SetScalars(rgb)
+    actual = load_rgb(output + ".png")
     stats = [0.0, 0.0, 0.0]
     if not vtkTetReferenceRenderer.CompareImages(actual, expected, stats):
         raise RuntimeError("images cannot be compared")
