@@ -23,6 +23,9 @@ ends within a time limit or the test fails; nothing waits for an X server.
                 pipeline on the others) and a rank whose EGL device does not exist (ParaView's
                 --displays names device 7): the image still right, the rank's message printed,
                 no hang.
+  --case server `mpirun -np 2 pvserver` with the plugin on PV_PLUGIN_PATH and a pvpython client
+                (pvbatch_render.py --connect): the server's ranks render comb6teeth, each says
+                on what; against pvbatch on 1 rank and the exact reference; no warning.
 Exit status 125 (a ctest skip, with the reason) when the private root, the plugin or mpirun is
 missing.
 """
@@ -31,8 +34,10 @@ import json
 import os
 import shutil
 import signal
+import socket
 import subprocess
 import sys
+import threading
 import time
 
 from vtkmodules.vtkCommonDataModel import vtkPlane
@@ -120,6 +125,57 @@ class Runner:
             result = json.load(f)
         print("%s: %d rank(s), %s, %.1f s in all; first frame %.2f s" % (
             name, ranks, mapper, elapsed, result["first_frame_s"]))
+        return output, result, lines
+
+    def serve(self, name, mesh, ranks, mapper, extra=(), timeout=300):
+        """`mpirun -np ranks pvserver` (the plugin on its PV_PLUGIN_PATH) and pvpython running
+        pvbatch_render.py as its client; returns (prefix, result, client's and server's lines).
+        Both must end within `timeout` seconds."""
+        output = os.path.join(self.options.temp, name)
+        with socket.socket() as probe:
+            probe.bind(("localhost", 0))
+            port = probe.getsockname()[1]
+        env = dict(self.env)
+        env["PV_PLUGIN_PATH"] = os.path.dirname(self.options.plugin)
+        pvserver = os.path.join(self.root, "usr", "bin", "pvserver")
+        server = subprocess.Popen(
+            self.mpirun() + ["--bind-to", "none", "-np", str(ranks), pvserver,
+                             "--server-port=%d" % port],
+            env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            start_new_session=True)
+        server_lines = []
+        reader = threading.Thread(target=lambda: server_lines.extend(server.stdout), daemon=True)
+        reader.start()
+        deadline = time.perf_counter() + timeout
+        try:
+            while not any("Accepting connection" in line for line in server_lines):
+                if server.poll() is not None or time.perf_counter() > deadline:
+                    print("".join(server_lines)[-4000:])
+                    raise RuntimeError("%s: pvserver did not start" % name)
+                time.sleep(0.2)
+            client = subprocess.run(
+                [os.path.join(self.root, "usr", "bin", "pvpython"), self.script,
+                 "--connect", "localhost:%d" % port, "--plugin", self.options.plugin,
+                 "--mesh", mesh, "--mapper", mapper, "--size", str(self.options.size),
+                 "--output", output] + list(extra),
+                env=self.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                timeout=max(1.0, deadline - time.perf_counter()))
+            server.wait(timeout=max(1.0, deadline - time.perf_counter()))
+        except subprocess.TimeoutExpired:
+            raise RuntimeError("%s: pvserver or its client did not end within %d s" % (name, timeout))
+        finally:
+            if server.poll() is None:
+                os.killpg(server.pid, signal.SIGKILL)
+            reader.join(timeout=10)
+        lines = client.stdout.splitlines() + [line.rstrip("\n") for line in server_lines]
+        for line in lines:
+            if line.startswith(("rendered", "statistics:")) or "INFO|" in line:
+                print("  " + line.split("[0m")[-1][:300])
+        if client.returncode != 0:
+            print(client.stdout[-4000:])
+            raise RuntimeError("%s: the client failed (%d)" % (name, client.returncode))
+        with open(output + ".json") as f:
+            result = json.load(f)
         return output, result, lines
 
     def warnings(self, lines, expected=()):
@@ -408,11 +464,36 @@ def case_edges(runner, data):
     return ok
 
 
+def case_server(runner, data):
+    """pvserver on 2 ranks, a pvpython client: the server's ranks render (EGL, no X) and composite,
+    the client gets the image."""
+    comb = os.path.join(data, "Meshes", "comb6teeth_tetgen_270k.vtu")
+    ok = True
+    one = runner.run("MPI_server_batch_1", comb, 1, TRC)
+    prefix, result, lines = runner.serve("MPI_server_trc_2", comb, 2, TRC)
+    # (TiledRayCastStatistics is read from the client's representation, which does not render
+    # here: empty in client-server mode; docs/parallel.md.)
+    print("server: %d ranks" % result["ranks"])
+    if result["ranks"] != 2:
+        print("the client does not see the server's 2 ranks")
+        ok = False
+    if not all(any("rank %d renders with EGL" % r in line for line in lines) for r in (0, 1)):
+        print("a server rank did not say what it renders with")
+        ok = False
+    ok = report("pvserver trc, 2 ranks vs pvbatch 1 rank", difference(prefix, one[0]),
+                ACROSS_RANKS) and ok
+    ok = reference_check(runner, prefix, result, comb, "pvserver trc, 2 ranks") and ok
+    if runner.warnings(lines):
+        print("warnings:\n" + "\n".join(runner.warnings(lines)))
+        ok = False
+    return ok
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--root", required=True)
     parser.add_argument("--plugin", required=True)
-    parser.add_argument("--case", choices=("mesh", "pvtu", "edges"), required=True)
+    parser.add_argument("--case", choices=("mesh", "pvtu", "edges", "server"), required=True)
     parser.add_argument("-D", dest="data", required=True)
     parser.add_argument("-T", dest="temp", required=True)
     parser.add_argument("--size", type=int, default=400)
@@ -427,7 +508,7 @@ def main():
         print("SKIP: no mpirun (Debian's openmpi-bin; Module/install-deps.sh installs it)")
         return 125
     runner = Runner(options)
-    cases = {"mesh": case_mesh, "pvtu": case_pvtu, "edges": case_edges}
+    cases = {"mesh": case_mesh, "pvtu": case_pvtu, "edges": case_edges, "server": case_server}
     start = time.perf_counter()
     ok = cases[options.case](runner, options.data)
     print("%s: %.0f s" % (options.case, time.perf_counter() - start))

@@ -26,10 +26,12 @@ from paraview.simple import (
     Calculator,
     Clip,
     ColorBy,
+    Connect,
     ProgrammableFilter,
     RedistributeDataSet,
     GetColorTransferFunction,
     GetOpacityTransferFunction,
+    GetSettingsProxy,
     GetActiveViewOrCreate,
     Hide,
     LoadPlugin,
@@ -77,8 +79,17 @@ parser.add_argument("--synchronous-statistics", action="store_true",
 parser.add_argument("--empty-view", action="store_true",
                     help="time the --frames frames with the volume hidden: what ParaView's view, "
                          "its compositing and this script cost a frame, apart from any mapper")
+parser.add_argument("--connect", default=None, metavar="HOST:PORT",
+                    help="run as a client (pvpython) of a pvserver there, which renders (its "
+                         "ranks, remote rendering forced); the server must have the plugin on "
+                         "PV_PLUGIN_PATH")
 args = parser.parse_args()
 
+if args.connect:
+    host, port = args.connect.rsplit(":", 1)
+    # The server loaded the plugin at its start (PV_PLUGIN_PATH): it must, for its initializer
+    # to tell ParaView that a rank without X renders (EGL). Loading it there again fails.
+    Connect(host, int(port))
 LoadPlugin(args.plugin, remote=False, ns=globals())
 
 if args.mesh == "mixed":
@@ -109,7 +120,8 @@ start = time.perf_counter()
 source.UpdatePipeline()
 read_s = time.perf_counter() - start
 info = source.GetDataInformation()
-ranks = vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions()
+ranks = (servermanager.ActiveConnection.GetNumberOfDataPartitions() if args.connect
+         else vtkProcessModule.GetProcessModule().GetNumberOfLocalPartitions())
 # The cells each rank read, before any redistribution (each rank's own pieces of a .pvtu),
 # gathered on rank 0 by a programmable filter that runs on every rank.
 RANK_CELLS = """
@@ -157,6 +169,10 @@ view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [args.size, args.size]
 view.OrientationAxesVisibility = 0
 view.UseFXAA = 1 if args.fxaa == "on" else 0
+if args.connect:
+    # Rendered on the server's ranks whatever the data's size (below ParaView's threshold the
+    # client would fetch the geometry and render it itself).
+    GetSettingsProxy("RenderViewSettings").RemoteRenderThreshold = 0
 if hasattr(view, "UseColorPaletteForBackground"):
     view.UseColorPaletteForBackground = 0
 view.Background = [float(c) for c in args.background.split(",")]
