@@ -49,7 +49,8 @@ from paraview.modules.vtkRemotingCore import vtkProcessModule
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
-parser.add_argument("--mesh", required=True, help="a .vtu file, or 'mixed'")
+parser.add_argument("--mesh", required=True,
+                    help="a .vtu or .pvtu file, 'mixed', or 'wavelet:N' (made on the ranks)")
 parser.add_argument("--array", default=None, help="point array to colour by (default: the first)")
 parser.add_argument("--mapper", default="Tiled ray cast")
 parser.add_argument("--size", type=int, default=256)
@@ -110,6 +111,13 @@ if args.mesh == "mixed":
     # Split as the representation does (vtkVolumeRepresentationPreprocessor: the same triangle
     # filter as Tetrahedralize), for the reference outside ParaView.
     SaveData(args.output + "_tets.vtu", proxy=Tetrahedralize(Input=source))
+elif args.mesh.startswith("wavelet:"):
+    # Generated piece by piece: ParaView's Wavelet gives each rank its own block of the extent
+    # (-n..n)^3, tetrahedralized there; no rank ever holds the whole mesh. Each piece is a box:
+    # with --use-data-partitions it is rendered where it was made, never redistributed.
+    n = int(args.mesh.split(":", 1)[1])
+    source = Tetrahedralize(Input=Wavelet(WholeExtent=[-n, n, -n, n, -n, n]))
+    types = None
 elif args.mesh.endswith(".pvtu"):
     source = XMLPartitionedUnstructuredGridReader(FileName=[args.mesh])
     types = None
@@ -149,6 +157,11 @@ if ranks > 1:
     counter = ProgrammableFilter(Input=source, OutputDataSetType="vtkPolyData", Script=RANK_CELLS)
     counts = servermanager.Fetch(counter, 0).GetFieldData().GetArray("RankCells")
     ranks_cells = [int(counts.GetValue(i)) for i in range(counts.GetNumberOfTuples())]
+if args.mesh.startswith("wavelet:") and ranks == 1:
+    # The whole generated mesh, for the reference outside ParaView.
+    SaveData(args.output + "_tets.vtu", proxy=source)
+
+
 def first_varying_array(proxy):
     """The first point array whose values vary: a constant one (post_tets6's Density) would
     make the default opacity ramp zero everywhere, an empty image."""
