@@ -425,16 +425,12 @@ bool vtkTiledRayCastComputePipeline::BeginFrame(
     {
       this->CountsRead[next].IsWritten(true);
       this->ReadCountsInto(next, stats);
-      read = true;
     }
   }
   this->CountsBuffer = next;
-  if (!read && !this->LastCounts.empty())
-  {
-    // Nothing new since the last counts read (the frame before was verified and read its own):
-    // the statistics show those, as they keep the latest GPU times, rather than zeros.
-    this->ReportCounts(stats);
-  }
+  // The latest counts read, also when none came since (the frame before was verified and read
+  // its own): the statistics show those, as they keep the latest GPU times, rather than zeros.
+  this->ReportCounts(stats);
 
   if (reuse)
   {
@@ -720,9 +716,8 @@ void vtkTiledRayCastComputePipeline::ReadCounts(vtkTiledRayCastStatistics* stats
 void vtkTiledRayCastComputePipeline::ReadCountsInto(int buffer, vtkTiledRayCastStatistics* stats)
 {
   this->LastCounts.resize(NumberOfRayCounts);
-  const std::uint32_t* counts = this->LastCounts.data();
-  this->CountsRead[buffer].Read(
-    0, NumberOfRayCounts * sizeof(std::uint32_t), this->LastCounts.data());
+  std::uint32_t* counts = this->LastCounts.data();
+  this->CountsRead[buffer].Read(0, NumberOfRayCounts * sizeof(std::uint32_t), counts);
   this->CountsPending[buffer] = false;
   this->ReportCounts(stats);
   this->RaysStopped = counts[CountStopped];

@@ -179,6 +179,13 @@ class Runner:
             result = json.load(f)
         return output, result, lines
 
+    def quiet(self, label, lines, expected=()):
+        """Whether the run printed no warning but those known or expected; prints those found."""
+        found = self.warnings(lines, expected)
+        if found:
+            print("%s: warnings:\n%s" % (label, "\n".join(found)))
+        return not found
+
     def warnings(self, lines, expected=()):
         """The warnings and errors printed, less ParaView's known one and those expected."""
         found = []
@@ -334,10 +341,8 @@ def case_mesh(runner, data):
         # torus_vistrails has 30 flat tetrahedra of its own, which the mapper warns about.
         expected = [r"Input mesh: .* degenerate"] if mesh == "torus_vistrails" else []
         for (tag, ranks), (prefix, result, lines) in sorted(runs.items()):
-            warnings = runner.warnings(lines, expected)
-            if tag.startswith("trc") and warnings:
-                print("%s: warnings:\n%s" % (prefix, "\n".join(warnings)))
-                ok = False
+            if tag.startswith("trc"):
+                ok = runner.quiet(prefix, lines, expected) and ok
             if ranks == 1:
                 continue
             base = one_pt if tag == "pt" else one_trc
@@ -398,9 +403,7 @@ def case_pvtu(runner, data):
         ok = report("pvtu trc, %d ranks vs 1 rank" % ranks, difference(prefix, one[0]),
                     ACROSS_RANKS) and ok
         ok = reference_check(runner, prefix, result, comb, "pvtu trc, %d ranks" % ranks) and ok
-        if runner.warnings(lines):
-            print("warnings:\n" + "\n".join(runner.warnings(lines)))
-            ok = False
+        ok = runner.quiet(prefix, lines) and ok
         if ranks == 3:
             pt = runner.run("MPI_pvtu_pt_%d" % ranks, ragged_file, ranks, PT)
             report("pvtu pt, %d ranks vs 1 rank" % ranks, difference(pt[0], one_pt[0]))
@@ -429,9 +432,7 @@ def case_pvtu(runner, data):
     ok = report("wavelet trc, 3 ranks, data partitions vs 1 rank", difference(prefix, one_w[0]),
                 (0.5, 2.0, 3.0)) and ok
     ok = reference_check(runner, prefix, result, whole, "wavelet trc, 3 ranks") and ok
-    if runner.warnings(lines):
-        print("warnings:\n" + "\n".join(runner.warnings(lines)))
-        ok = False
+    ok = runner.quiet(prefix, lines) and ok
     return ok
 
 
@@ -506,9 +507,7 @@ def case_server(runner, data):
     ok = report("pvserver trc, 2 ranks vs pvbatch 1 rank", difference(prefix, one[0]),
                 ACROSS_RANKS) and ok
     ok = reference_check(runner, prefix, result, comb, "pvserver trc, 2 ranks") and ok
-    if runner.warnings(lines):
-        print("warnings:\n" + "\n".join(runner.warnings(lines)))
-        ok = False
+    ok = runner.quiet(prefix, lines) and ok
     return ok
 
 

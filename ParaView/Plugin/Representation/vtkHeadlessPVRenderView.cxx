@@ -207,11 +207,11 @@ void vtkHeadlessPVRenderView::ChooseDevice(vtkHeadlessEGLRenderWindow* processWi
   int index = -1;
   // ParaView's --displays: ParaView assigns them to ranks (and has set DISPLAY to the value,
   // which is no X display: the plugin's factory then chose EGL).
-  const std::string display = vtkRemotingCoreConfiguration::GetInstance()->GetDisplay();
+  const int display = ParseIndex(vtkRemotingCoreConfiguration::GetInstance()->GetDisplay().c_str());
   const char* environment = std::getenv("VTK_DEFAULT_EGL_DEVICE_INDEX");
-  if (ParseIndex(display.c_str()) >= 0)
+  if (display >= 0)
   {
-    index = ParseIndex(display.c_str());
+    index = display;
     this->DeviceChoice = "--displays";
   }
   else if (environment && *environment)

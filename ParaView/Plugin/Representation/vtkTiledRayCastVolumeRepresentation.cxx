@@ -22,6 +22,16 @@
 #include "vtkVolumeProperty.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
 
+namespace
+{
+// Whether this process is one rank of several (ParaView's server or pvbatch under MPI).
+bool IsParallel()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  return controller && controller->GetNumberOfProcesses() > 1;
+}
+}
+
 vtkStandardNewMacro(vtkTiledRayCastVolumeRepresentation);
 
 //------------------------------------------------------------------------------
@@ -167,10 +177,8 @@ int vtkTiledRayCastVolumeRepresentation::RequestData(
   {
     return 0;
   }
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   auto* piece = vtkUnstructuredGrid::SafeDownCast(this->Preprocessor->GetOutputDataObject(0));
-  if (controller && controller->GetNumberOfProcesses() > 1 && piece &&
-    piece->GetNumberOfCells() > 0)
+  if (IsParallel() && piece && piece->GetNumberOfCells() > 0)
   {
     vtkNew<vtkCellArray> cells;
     cells->DeepCopy(piece->GetCells());
@@ -187,21 +195,18 @@ int vtkTiledRayCastVolumeRepresentation::ProcessViewRequest(
   {
     return 0;
   }
-  if (requestType == vtkPVView::REQUEST_UPDATE() &&
-    this->GetActiveVolumeMapper() == this->TiledRayCastMapper &&
-    this->TiledRayCastSplitBoundaryCells)
-  {
-    vtkPVRenderView::SetRedistributionModeToSplitBoundaryCells(inInfo, this);
-  }
   if (requestType == vtkPVView::REQUEST_UPDATE())
   {
+    if (this->GetActiveVolumeMapper() == this->TiledRayCastMapper &&
+      this->TiledRayCastSplitBoundaryCells)
+    {
+      vtkPVRenderView::SetRedistributionModeToSplitBoundaryCells(inInfo, this);
+    }
     // The cut at the partition planes leaves degenerate cells and duplicate points wherever a
     // plane passes through or next to a point: ours, not the user's, and not worth a warning from
     // every rank (the validation report still counts them).
-    vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-    const bool cut =
-      this->TiledRayCastSplitBoundaryCells && controller && controller->GetNumberOfProcesses() > 1;
-    this->TiledRayCastMapper->SetWarnAboutDegenerateCells(!cut);
+    this->TiledRayCastMapper->SetWarnAboutDegenerateCells(
+      !(this->TiledRayCastSplitBoundaryCells && IsParallel()));
   }
   return 1;
 }
