@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string>
 
 vtkStandardNewMacro(vtkTiledRayCastStatistics);
 
@@ -142,7 +143,11 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
   }
   text << ", ray casting " << this->RayCastingTime << ", compositing " << this->CompositingTime
        << ", total " << this->TotalGPUTime << "; GPU memory " << this->GetTotalGPUBytes()
-       << " B (mesh " << this->MeshBytes << " B, " << this->MeshBytesPerTetrahedron << " B/tet)";
+       << " B (mesh " << this->MeshBytes << " B, " << this->MeshBytesPerTetrahedron << " B/tet"
+       << (this->NumberOfMeshTextures > 4
+              ? ", in " + std::to_string(this->NumberOfMeshTextures) + " textures"
+              : std::string())
+       << ")";
   return text.str();
 }
 
@@ -189,6 +194,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
   os << indent << "MeshBytes: " << this->MeshBytes << "\n";
   os << indent << "MeshBytesPerTetrahedron: " << this->MeshBytesPerTetrahedron << "\n";
+  os << indent << "NumberOfMeshTextures: " << this->NumberOfMeshTextures << "\n";
   os << indent << "TransferFunctionBytes: " << this->TransferFunctionBytes << "\n";
   os << indent << "RenderTargetBytes: " << this->RenderTargetBytes << "\n";
   os << indent << "NumberOfTransferFunctionNodes: " << this->NumberOfTransferFunctionNodes << "\n";

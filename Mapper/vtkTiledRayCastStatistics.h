@@ -285,6 +285,14 @@ public:
   vtkGetMacro(MeshBytesPerTetrahedron, double);
   ///@}
 
+  /**
+   * How many textures and texture buffers hold the mesh's layout: one per array, more where an
+   * array is larger than the GPU's largest texture buffer (GL_MAX_TEXTURE_BUFFER_SIZE, 2^27
+   * texels on NVIDIA's GPUs) and is split.
+   */
+  vtkSetMacro(NumberOfMeshTextures, int);
+  vtkGetMacro(NumberOfMeshTextures, int);
+
   ///@{
   /**
    * The tables in use: the number of piecewise-linear transfer-function nodes the shader
@@ -382,6 +390,7 @@ protected:
   vtkIdType TransferFunctionBytes = 0;
   vtkIdType RenderTargetBytes = 0;
   double MeshBytesPerTetrahedron = 0;
+  int NumberOfMeshTextures = 0;
   int NumberOfTransferFunctionNodes = 0;
   int IntegrationMode = 0;
   double PredictedError = -1.0;

@@ -333,8 +333,10 @@ public:
   /**
    * Upper bounds on the GPU textures the mesh may use, in texels: the largest texture buffer
    * and the largest side of a 2D texture. 0 (the default) means the GPU's own limits
-   * (GL_MAX_TEXTURE_BUFFER_SIZE, GL_MAX_TEXTURE_SIZE); a positive value can only lower them
-   * (to leave memory to other work, or to test how a mesh too large is refused).
+   * (GL_MAX_TEXTURE_BUFFER_SIZE, GL_MAX_TEXTURE_SIZE); a positive value can only lower them.
+   * The compact layout splits an array larger than one texture buffer over up to 8 of them
+   * (NVIDIA's limit, 2^27 texels, holds 134M tetrahedra per buffer; the walk's neighbour words
+   * hold 2^30); the paper layout's 2D textures are refused when too large.
    */
   vtkSetClampMacro(MaximumTextureBufferSize, vtkIdType, 0, VTK_ID_MAX);
   vtkGetMacro(MaximumTextureBufferSize, vtkIdType);

@@ -81,13 +81,19 @@ bool vtkTetMeshCompactLayout::Build(vtkTetMesh* mesh)
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const vtkIdType numPoints = mesh->GetNumberOfPoints();
   const vtkIdType numFaces = mesh->GetNumberOfBoundaryFaces();
+  // Arrays larger than one texture buffer are split over several, up to the limit.
   const vtkIdType largest = std::max({ numTets, numPoints, numFaces });
-  if (largest > this->MaximumTextureBufferSize)
+  const vtkIdType bufferSize = this->GetTextureBufferSize();
+  const vtkIdType buffers = (largest + bufferSize - 1) / bufferSize;
+  if (buffers > this->MaximumTextureBuffersPerArray)
   {
     std::ostringstream text;
     text << "the compact layout of " << numTets << " tetrahedra, " << numPoints << " points and "
-         << numFaces << " boundary faces needs texture buffers of " << largest
-         << " texels, more than the maximum texture buffer size " << this->MaximumTextureBufferSize;
+         << numFaces << " boundary faces needs " << buffers << " texture buffers of " << bufferSize
+         << " texels for an array of " << largest << " texels, more than the "
+         << this->MaximumTextureBuffersPerArray
+         << " allowed per array (maximum texture buffer size " << this->MaximumTextureBufferSize
+         << " texels)";
     this->Fail(text.str());
     return false;
   }

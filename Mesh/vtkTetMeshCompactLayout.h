@@ -36,7 +36,9 @@
  * A vertex shader can draw the faces without a vertex buffer: face = gl_VertexID / 3, point id
  * from the face's texel, position from "Points".
  *
- * Build() fails when an array exceeds GetMaximumTextureBufferSize() texels.
+ * An array of more than GetMaximumTextureBufferSize() texels is split over texture buffers of
+ * GetTextureBufferSize() texels; Build() fails when one needs more than
+ * GetMaximumTextureBuffersPerArray() of them.
  */
 
 #ifndef vtkTetMeshCompactLayout_h

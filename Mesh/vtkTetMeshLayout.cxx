@@ -14,6 +14,8 @@
 #include "vtkTetMesh.h"
 #include "vtkTetMeshValidationReport.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 vtkTetMeshLayout::vtkTetMeshLayout() = default;
 
@@ -177,6 +179,33 @@ void vtkTetMeshLayout::GetArrayTextureSize(int index, int size[2])
 }
 
 //------------------------------------------------------------------------------
+int vtkTetMeshLayout::GetTextureBufferShift() const
+{
+  int shift = 0;
+  while (shift < 62 && (vtkIdType(2) << shift) <= this->MaximumTextureBufferSize)
+  {
+    ++shift;
+  }
+  return shift;
+}
+
+//------------------------------------------------------------------------------
+int vtkTetMeshLayout::GetNumberOfTextureBuffers(int index)
+{
+  vtkDataArray* array = this->GetArray(index);
+  if (!array)
+  {
+    return 0;
+  }
+  if (this->Arrays[index].Kind != TextureBuffer)
+  {
+    return 1;
+  }
+  const vtkIdType size = this->GetTextureBufferSize();
+  return static_cast<int>(std::max<vtkIdType>(1, (array->GetNumberOfTuples() + size - 1) / size));
+}
+
+//------------------------------------------------------------------------------
 vtkDataArray* vtkTetMeshLayout::GetBoundaryArray()
 {
   return this->Boundary.Array;
@@ -242,6 +271,7 @@ void vtkTetMeshLayout::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTetrahedra: " << this->NumberOfTetrahedra << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
+  os << indent << "MaximumTextureBuffersPerArray: " << this->MaximumTextureBuffersPerArray << "\n";
   os << indent << "Shift: (" << this->Shift[0] << ", " << this->Shift[1] << ", " << this->Shift[2]
      << ")\n";
   os << indent << "LastUpdate: " << this->LastUpdate << "\n";
@@ -252,7 +282,7 @@ void vtkTetMeshLayout::PrintSelf(ostream& os, vtkIndent indent)
     os << indent << "Array " << i << ": " << this->GetArrayName(i) << " ("
        << (this->Arrays[i].Kind == Texture2D ? "2D texture " : "texture buffer ") << size[0]
        << " x " << size[1] << ", " << this->Arrays[i].Array->GetNumberOfComponents()
-       << " components)\n";
+       << " components, " << this->GetNumberOfTextureBuffers(i) << " texture buffer(s))\n";
   }
   os << indent << "Bytes: " << this->GetNumberOfBytes() << " (with boundary "
      << this->GetNumberOfBytesWithBoundary() << ")\n";

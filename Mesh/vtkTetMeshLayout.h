@@ -29,8 +29,10 @@
  * exactly when its content is rewritten: a mapper re-uploads those arrays and no others. Update()
  * picks the cheapest of the three from the mesh's time stamps and does nothing when the mesh has
  * not changed since. Build() fails, with an error and GetValid() false, when the mesh does not fit
- * the texture limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize(); the mapper sets them
- * from GL_MAX_TEXTURE_SIZE and GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable.
+ * the texture limits (SetMaximumTextureSize(), SetMaximumTextureBufferSize() and
+ * SetMaximumTextureBuffersPerArray(); the mapper sets the first two from GL_MAX_TEXTURE_SIZE and
+ * GL_MAX_TEXTURE_BUFFER_SIZE) or when the mesh is unusable. A texture buffer array larger than
+ * one texture buffer is uploaded as several (GetNumberOfTextureBuffers()).
  *
  * @sa vtkTetMeshPaperLayout vtkTetMeshCompactLayout vtkTetMesh
  */
@@ -154,14 +156,29 @@ public:
 
   ///@{
   /**
-   * Texture limits: the largest width or height of a 2D texture (default 16384) and the largest
-   * number of texels of a texture buffer (default 2^27). The mapper sets them from the OpenGL
-   * context (GL_MAX_TEXTURE_SIZE, GL_MAX_TEXTURE_BUFFER_SIZE).
+   * Texture limits: the largest width or height of a 2D texture (default 16384), the largest
+   * number of texels of a texture buffer (default 2^27) and how many texture buffers one array
+   * may be split into (default 8). The mapper sets the first two from the OpenGL context
+   * (GL_MAX_TEXTURE_SIZE, GL_MAX_TEXTURE_BUFFER_SIZE: 2^27 on NVIDIA's GPUs, 134M tetrahedra).
    */
   vtkSetClampMacro(MaximumTextureSize, int, 1, VTK_INT_MAX);
   vtkGetMacro(MaximumTextureSize, int);
   vtkSetClampMacro(MaximumTextureBufferSize, vtkIdType, 1, VTK_ID_MAX);
   vtkGetMacro(MaximumTextureBufferSize, vtkIdType);
+  vtkSetClampMacro(MaximumTextureBuffersPerArray, int, 1, 64);
+  vtkGetMacro(MaximumTextureBuffersPerArray, int);
+  ///@}
+
+  ///@{
+  /**
+   * How a texture buffer array is split: into buffers of GetTextureBufferSize() texels (the
+   * largest power of two within MaximumTextureBufferSize, so that a shader finds texel i in
+   * buffer i >> GetTextureBufferShift() at i & (size - 1)), the last one shorter.
+   * GetNumberOfTextureBuffers() is 1 for a 2D texture, 0 for a bad index.
+   */
+  int GetTextureBufferShift() const;
+  vtkIdType GetTextureBufferSize() const { return vtkIdType(1) << this->GetTextureBufferShift(); }
+  int GetNumberOfTextureBuffers(int index);
   ///@}
 
   /**
@@ -207,6 +224,7 @@ protected:
   double Shift[3] = { 0.0, 0.0, 0.0 };
   int MaximumTextureSize = 16384;
   vtkIdType MaximumTextureBufferSize = vtkIdType(1) << 27;
+  int MaximumTextureBuffersPerArray = 8;
   int LastUpdate = UpdatedNothing;
   vtkIdType NumberOfTetrahedra = 0;
 

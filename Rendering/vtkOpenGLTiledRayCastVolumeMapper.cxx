@@ -18,6 +18,7 @@
 #include "vtkOpenGLState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
+#include "vtkTetMeshCompactLayout.h"
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputePipeline.h"
 #include "vtkTiledRayCastComputeShader.h"
@@ -248,6 +249,15 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ProgramInputs(vtkOpenGLRenderWi
   inputs.Compute = this->UseCompute;
   inputs.PaperLayout = this->Mesh.LayoutKind == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
   inputs.CellScalars = this->Mesh.HasCellScalars;
+  vtkTetMeshLayout* layout = this->Mesh.GetLayout();
+  if (!inputs.PaperLayout && layout && layout->GetValid())
+  {
+    inputs.TextureBufferShift = layout->GetTextureBufferShift();
+    inputs.TetTextureBuffers =
+      layout->GetNumberOfTextureBuffers(vtkTetMeshCompactLayout::TetPointsArray);
+    inputs.PointTextureBuffers =
+      layout->GetNumberOfTextureBuffers(vtkTetMeshCompactLayout::PointsArray);
+  }
   inputs.IntegrationMode = this->IntegrationMode();
   inputs.BlendMode = this->Self->GetBlendMode();
   inputs.Shading = this->Lighting.Enabled;
@@ -672,6 +682,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
     impl->Mesh.NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->Mesh.NumberOfTets : 0.0);
+  stats->SetNumberOfMeshTextures(impl->MeshTextures.GetNumberOfTextures());
   stats->SetTransferFunctionBytes(impl->Integration.GetBytes());
   stats->SetRenderTargetBytes(renderTargetBytes);
   vtkOpenGLCheckErrorMacro("failed after Render");

@@ -23,14 +23,34 @@
 
 #include <algorithm>
 
-// A mesh array on the GPU.
+// A mesh array on the GPU: one texture, or texture buffers of the layout's size each (an array
+// larger than the GPU's largest texture buffer is split), uniforms "in_<name>", "in_<name>_1", ...
 struct vtkTiledRayCastMeshTextures::MeshTexture
 {
-  std::string Uniform;
+  std::string Name;
   int Kind = -1; // vtkTetMeshLayout::ArrayKind: a texture buffer's name never becomes a 2D texture
-  vtkNew<vtkOpenGLBufferObject> Buffer;
-  vtkNew<vtkTextureObject> Texture;
+  struct Part
+  {
+    vtkNew<vtkOpenGLBufferObject> Buffer;
+    vtkNew<vtkTextureObject> Texture;
+  };
+  std::vector<std::unique_ptr<Part>> Parts;
   vtkIdType Bytes = 0;
+
+  std::string Uniform(size_t part) const
+  {
+    return "in_" + this->Name + (part > 0 ? "_" + std::to_string(part) : std::string());
+  }
+
+  void Release(vtkWindow* window)
+  {
+    for (auto& part : this->Parts)
+    {
+      part->Texture->ReleaseGraphicsResources(window);
+      part->Buffer->ReleaseGraphicsResources();
+    }
+    this->Parts.clear();
+  }
 };
 
 //------------------------------------------------------------------------------
@@ -44,8 +64,7 @@ void vtkTiledRayCastMeshTextures::ReleaseGraphicsResources(vtkWindow* window)
 {
   for (auto& t : this->Textures)
   {
-    t->Texture->ReleaseGraphicsResources(window);
-    t->Buffer->ReleaseGraphicsResources();
+    t->Release(window);
   }
   this->Textures.clear();
   this->UploadedTime = 0;
@@ -70,7 +89,7 @@ bool vtkTiledRayCastMeshTextures::Update(vtkOpenGLRenderWindow* window, vtkTetMe
   bool sameArrays = static_cast<int>(this->Textures.size()) == n;
   for (int i = 0; sameArrays && i < n; ++i)
   {
-    sameArrays = this->Textures[i]->Uniform == std::string("in_") + layout->GetArrayName(i) &&
+    sameArrays = this->Textures[i]->Name == layout->GetArrayName(i) &&
       this->Textures[i]->Kind == layout->GetArrayKind(i);
   }
   if (!sameArrays)
@@ -91,12 +110,10 @@ bool vtkTiledRayCastMeshTextures::Update(vtkOpenGLRenderWindow* window, vtkTetMe
     {
       continue; // e.g. only the points moved: topology stays on the GPU
     }
-    t->Uniform = std::string("in_") + layout->GetArrayName(i);
+    t->Name = layout->GetArrayName(i);
     t->Kind = layout->GetArrayKind(i);
     const int comps = array->GetNumberOfComponents();
     const bool isFloat = array->GetDataType() == VTK_FLOAT;
-    static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
-    static const unsigned int uintFormats[5] = { 0, GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI };
     if (comps < 1 || comps > 4 || comps == 3 ||
       (!isFloat && array->GetDataType() != VTK_TYPE_UINT32))
     {
@@ -104,33 +121,31 @@ bool vtkTiledRayCastMeshTextures::Update(vtkOpenGLRenderWindow* window, vtkTetMe
       return false;
     }
     const vtkIdType bytes = array->GetNumberOfValues() * array->GetDataTypeSize();
-    t->Texture->SetContext(window);
-    t->Texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
-    if (layout->GetArrayKind(i) == vtkTetMeshLayout::TextureBuffer)
+    const size_t parts = static_cast<size_t>(layout->GetNumberOfTextureBuffers(i));
+    if (t->Parts.size() != parts)
     {
-      t->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-      if (isFloat)
+      t->Release(window);
+      for (size_t k = 0; k < parts; ++k)
       {
-        t->Buffer->Upload(static_cast<const float*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
+        t->Parts.emplace_back(new MeshTexture::Part);
       }
-      else
-      {
-        t->Buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(0)),
-          static_cast<size_t>(array->GetNumberOfValues()), vtkOpenGLBufferObject::TextureBuffer);
-      }
-      t->Texture->CreateTextureBuffer(static_cast<unsigned int>(array->GetNumberOfTuples()), comps,
-        isFloat ? VTK_FLOAT : VTK_UNSIGNED_INT, t->Buffer);
+    }
+    if (t->Kind == vtkTetMeshLayout::TextureBuffer)
+    {
+      this->UploadTextureBuffers(window, t, array, layout->GetTextureBufferSize());
     }
     else
     {
       int size[2];
       layout->GetArrayTextureSize(i, size);
-      t->Texture->SetFormat(comps == 4 ? GL_RGBA : GL_RED);
-      t->Texture->SetDataType(GL_FLOAT);
-      t->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
-      t->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-      t->Texture->Create2DFromRaw(size[0], size[1], comps, VTK_FLOAT, array->GetVoidPointer(0));
+      vtkTextureObject* texture = t->Parts[0]->Texture;
+      texture->SetContext(window);
+      texture->SetInternalFormat(comps == 4 ? GL_RGBA32F : GL_R32F);
+      texture->SetFormat(comps == 4 ? GL_RGBA : GL_RED);
+      texture->SetDataType(GL_FLOAT);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->Create2DFromRaw(size[0], size[1], comps, VTK_FLOAT, array->GetVoidPointer(0));
     }
     t->Bytes = bytes;
     sent += bytes;
@@ -156,17 +171,65 @@ bool vtkTiledRayCastMeshTextures::Update(vtkOpenGLRenderWindow* window, vtkTetMe
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastMeshTextures::UploadTextureBuffers(
+  vtkOpenGLRenderWindow* window, MeshTexture* t, vtkDataArray* array, vtkIdType bufferSize)
+{
+  const int comps = array->GetNumberOfComponents();
+  const bool isFloat = array->GetDataType() == VTK_FLOAT;
+  static const unsigned int floatFormats[5] = { 0, GL_R32F, GL_RG32F, 0, GL_RGBA32F };
+  static const unsigned int uintFormats[5] = { 0, GL_R32UI, GL_RG32UI, 0, GL_RGBA32UI };
+  const vtkIdType texels = array->GetNumberOfTuples();
+  for (size_t k = 0; k < t->Parts.size(); ++k)
+  {
+    const vtkIdType first = static_cast<vtkIdType>(k) * bufferSize;
+    const vtkIdType count = std::max<vtkIdType>(0, std::min(bufferSize, texels - first));
+    const size_t values = static_cast<size_t>(count * comps);
+    vtkOpenGLBufferObject* buffer = t->Parts[k]->Buffer;
+    vtkTextureObject* texture = t->Parts[k]->Texture;
+    buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+    if (isFloat)
+    {
+      buffer->Upload(static_cast<const float*>(array->GetVoidPointer(first * comps)), values,
+        vtkOpenGLBufferObject::TextureBuffer);
+    }
+    else
+    {
+      buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(first * comps)),
+        values, vtkOpenGLBufferObject::TextureBuffer);
+    }
+    texture->SetContext(window);
+    texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
+    texture->CreateTextureBuffer(
+      static_cast<unsigned int>(count), comps, isFloat ? VTK_FLOAT : VTK_UNSIGNED_INT, buffer);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastMeshTextures::GetNumberOfTextures() const
+{
+  size_t count = 0;
+  for (const auto& t : this->Textures)
+  {
+    count += t->Parts.size();
+  }
+  return static_cast<int>(count);
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastMeshTextures::ActivateTextures(bool activate)
 {
   for (auto& t : this->Textures)
   {
-    if (activate)
+    for (auto& part : t->Parts)
     {
-      t->Texture->Activate();
-    }
-    else
-    {
-      t->Texture->Deactivate();
+      if (activate)
+      {
+        part->Texture->Activate();
+      }
+      else
+      {
+        part->Texture->Deactivate();
+      }
     }
   }
 }
@@ -176,6 +239,9 @@ void vtkTiledRayCastMeshTextures::SetUniforms(vtkShaderProgram* p)
 {
   for (auto& t : this->Textures)
   {
-    p->SetUniformi(t->Uniform.c_str(), t->Texture->GetTextureUnit());
+    for (size_t k = 0; k < t->Parts.size(); ++k)
+    {
+      p->SetUniformi(t->Uniform(k).c_str(), t->Parts[k]->Texture->GetTextureUnit());
+    }
   }
 }

@@ -14,9 +14,10 @@
  *
  * One texture per array of a vtkTetMeshLayout (compact or paper), named in the shaders by the
  * array's name with "in_" before it: a texture buffer, or a 2D texture for the paper layout's
- * arrays. Uploads only the arrays whose MTime is newer than the last upload (a moving mesh sends
- * its points only; a camera move nothing); a layout of other arrays (names, count or kinds)
- * starts afresh.
+ * arrays. An array larger than one texture buffer is split as the layout says
+ * (vtkTetMeshLayout::GetNumberOfTextureBuffers()): its parts are "in_<name>", "in_<name>_1", ...
+ * Uploads only the arrays whose MTime is newer than the last upload (a moving mesh sends its points
+ * only; a camera move nothing); a layout of other arrays (names, count or kinds) starts afresh.
  *
  * Private to the module: not wrapped, not installed.
  */
@@ -30,6 +31,7 @@
 #include <string> // For std::string
 #include <vector> // For std::vector
 
+class vtkDataArray;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTetMesh;
@@ -58,6 +60,9 @@ public:
   /// Bytes held on the GPU.
   vtkIdType GetBytes() const { return this->Bytes; }
 
+  /// Textures and texture buffers held (more than the arrays where one is split).
+  int GetNumberOfTextures() const;
+
   void ActivateTextures(bool activate);
 
   /**
@@ -72,6 +77,9 @@ private:
   void operator=(const vtkTiledRayCastMeshTextures&) = delete;
 
   struct MeshTexture;
+  void UploadTextureBuffers(
+    vtkOpenGLRenderWindow* window, MeshTexture* t, vtkDataArray* array, vtkIdType bufferSize);
+
   std::vector<std::unique_ptr<MeshTexture>> Textures;
   vtkMTimeType UploadedTime = 0;
   vtkIdType Bytes = 0;

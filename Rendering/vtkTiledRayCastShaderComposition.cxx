@@ -29,9 +29,41 @@ bool vtkTiledRayCastShaderComposition::Inputs::operator==(const Inputs& other) c
 {
   return this->Window == other.Window && this->Compute == other.Compute &&
     this->PaperLayout == other.PaperLayout && this->CellScalars == other.CellScalars &&
+    this->TextureBufferShift == other.TextureBufferShift &&
+    this->TetTextureBuffers == other.TetTextureBuffers &&
+    this->PointTextureBuffers == other.PointTextureBuffers &&
     this->IntegrationMode == other.IntegrationMode && this->BlendMode == other.BlendMode &&
     this->Shading == other.Shading && this->GradientOpacity == other.GradientOpacity &&
     this->SkipEmptySpace == other.SkipEmptySpace;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkTiledRayCastShaderComposition::TextureBufferFetch(
+  const char* name, const char* sampler, const char* texel, int buffers, int shift)
+{
+  // One buffer: a plain texelFetch (what the compiler inlines is the code before the split).
+  // Several: texel i in buffer i >> shift at i & mask, chosen by a branch per buffer (an array of
+  // samplers may only be indexed by a dynamically uniform index, and rays of one warp read
+  // different buffers).
+  std::string code;
+  for (int k = 0; k < buffers; ++k)
+  {
+    code += std::string("uniform ") + sampler + " in_" + name +
+      (k > 0 ? "_" + std::to_string(k) : std::string()) + ";\n";
+  }
+  code += std::string(texel) + " trcFetch" + name + "(uint i)\n{\n";
+  if (buffers == 1)
+  {
+    return code + "  return texelFetch(in_" + name + ", int(i));\n}\n";
+  }
+  code += "  int texel = int(i & " + std::to_string((1u << shift) - 1u) + "u);\n";
+  code += "  uint part = i >> " + std::to_string(shift) + "u;\n";
+  for (int k = buffers - 1; k > 0; --k)
+  {
+    code += "  if (part == " + std::to_string(k) + "u)\n  {\n    return texelFetch(in_" + name +
+      "_" + std::to_string(k) + ", texel);\n  }\n";
+  }
+  return code + "  return texelFetch(in_" + name + ", texel);\n}\n";
 }
 
 //------------------------------------------------------------------------------
@@ -42,14 +74,22 @@ vtkTiledRayCastShaderComposition::Replacements vtkTiledRayCastShaderComposition:
   const int mode = inputs.IntegrationMode;
 
   std::string layoutCode = paper ? vtkTiledRayCastPaperLayout : vtkTiledRayCastCompactLayout;
-  if (!paper && inputs.CellScalars)
+  if (!paper)
   {
-    // Cell scalars: constant per tet, the field has no gradient.
-    vtkShaderProgram::Substitute(
-      layoutCode, "//TRC::CellScalars::Dec", "uniform samplerBuffer in_TetScalars;");
-    vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
-      "float cellScalar = texelFetch(in_TetScalars, int(tet)).r;\n"
-      "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
+    const int shift = inputs.TextureBufferShift;
+    const int tets = inputs.TetTextureBuffers;
+    std::string fetch = TextureBufferFetch("TetPoints", "usamplerBuffer", "uvec4", tets, shift) +
+      TextureBufferFetch("TetNeighbors", "usamplerBuffer", "uvec4", tets, shift) +
+      TextureBufferFetch("Points", "samplerBuffer", "vec4", inputs.PointTextureBuffers, shift);
+    if (inputs.CellScalars)
+    {
+      // Cell scalars: constant per tet, the field has no gradient.
+      fetch += TextureBufferFetch("TetScalars", "samplerBuffer", "vec4", tets, shift);
+      vtkShaderProgram::Substitute(layoutCode, "//TRC::CellScalars::Impl",
+        "float cellScalar = trcFetchTetScalars(tet).r;\n"
+        "  q0.w = cellScalar;\n  q1.w = cellScalar;\n  q2.w = cellScalar;\n  q3.w = cellScalar;");
+    }
+    vtkShaderProgram::Substitute(layoutCode, "//TRC::MeshFetch::Dec", fetch);
   }
   const char* integration = mode == vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D
     ? vtkTiledRayCastPreIntegration3D

@@ -46,6 +46,11 @@ public:
     bool Compute = false;                    // which pipeline's programs
     bool PaperLayout = false;
     bool CellScalars = false;
+    // The compact layout's texture buffers (vtkTetMeshLayout::GetNumberOfTextureBuffers()): how
+    // many per tetrahedron array and for the points, texel i in buffer i >> TextureBufferShift.
+    int TextureBufferShift = 0;
+    int TetTextureBuffers = 1;
+    int PointTextureBuffers = 1;
     int IntegrationMode = -1; // vtkTiledRayCastVolumeMapper's (never automatic)
     int BlendMode = -1;       // vtkVolumeMapper's
     bool Shading = false;
@@ -62,6 +67,14 @@ public:
    * stands for in the inputs) go before the common code.
    */
   static Replacements Compose(const Inputs& inputs, const std::string& meshDefinitions);
+
+  /**
+   * The declarations of texture buffer array `name` split over `buffers` texture buffers
+   * ("in_<name>", "in_<name>_1", ...) and the function trcFetch<name>(uint i) that reads its
+   * texel i (of GLSL type `texel`).
+   */
+  static std::string TextureBufferFetch(
+    const char* name, const char* sampler, const char* texel, int buffers, int shift);
 
   /**
    * Whether `inputs` differ from those of the programs last built (always, before any).

@@ -4,22 +4,23 @@
 // or TRC_NO_NEIGHBOR); per point: (x, y, z, scalar) in RGBA32F. Normals and
 // the linear scalar field are computed here, from the four points.
 //============================================================================
-uniform usamplerBuffer in_TetPoints;
 // A neighbour word holds the face the walk enters by: the walk need not remember the tet it
 // came from (a register through every step).
 const bool TRC_LAYOUT_STORES_ENTRY_FACES = true;
-uniform usamplerBuffer in_TetNeighbors;
-uniform samplerBuffer in_Points;
-//TRC::CellScalars::Dec
+// The texture buffers and how texel i of each array is read: trcFetchTetPoints(i),
+// trcFetchTetNeighbors(i), trcFetchPoints(i) (and trcFetchTetScalars(i) with cell scalars), from
+// one texture buffer, or from several where an array is larger than the GPU's largest
+// (vtkTiledRayCastShaderComposition writes them).
+//TRC::MeshFetch::Dec
 
 // The four points of a tet (its point ids, then the points).
 void trcTetPoints(uint tet, out vec3 p[4])
 {
-  uvec4 ids = texelFetch(in_TetPoints, int(tet));
-  p[0] = texelFetch(in_Points, int(ids.x)).xyz;
-  p[1] = texelFetch(in_Points, int(ids.y)).xyz;
-  p[2] = texelFetch(in_Points, int(ids.z)).xyz;
-  p[3] = texelFetch(in_Points, int(ids.w)).xyz;
+  uvec4 ids = trcFetchTetPoints(tet);
+  p[0] = trcFetchPoints(ids.x).xyz;
+  p[1] = trcFetchPoints(ids.y).xyz;
+  p[2] = trcFetchPoints(ids.z).xyz;
+  p[3] = trcFetchPoints(ids.w).xyz;
 }
 
 // A tet as the walk holds it: its points and the scalar field
@@ -33,11 +34,11 @@ struct TrcTet
 
 void trcLoadTet(uint tet, out TrcTet t)
 {
-  uvec4 ids = texelFetch(in_TetPoints, int(tet));
-  vec4 q0 = texelFetch(in_Points, int(ids.x));
-  vec4 q1 = texelFetch(in_Points, int(ids.y));
-  vec4 q2 = texelFetch(in_Points, int(ids.z));
-  vec4 q3 = texelFetch(in_Points, int(ids.w));
+  uvec4 ids = trcFetchTetPoints(tet);
+  vec4 q0 = trcFetchPoints(ids.x);
+  vec4 q1 = trcFetchPoints(ids.y);
+  vec4 q2 = trcFetchPoints(ids.z);
+  vec4 q3 = trcFetchPoints(ids.w);
   t.p[0] = q0.xyz;
   t.p[1] = q1.xyz;
   t.p[2] = q2.xyz;
@@ -76,11 +77,11 @@ vec3 trcFaceNormal(TrcTet t, int f)
 // entry passes need no more: three points instead of four, no gradient).
 void trcLoadFace(uint tet, int face, out vec3 point, out vec3 normal)
 {
-  uvec4 ids = texelFetch(in_TetPoints, int(tet));
+  uvec4 ids = trcFetchTetPoints(tet);
   ivec3 corners = trcFacePoints[face];
-  vec3 a = texelFetch(in_Points, int(ids[corners.x])).xyz;
-  vec3 b = texelFetch(in_Points, int(ids[corners.y])).xyz;
-  vec3 c = texelFetch(in_Points, int(ids[corners.z])).xyz;
+  vec3 a = trcFetchPoints(ids[corners.x]).xyz;
+  vec3 b = trcFetchPoints(ids[corners.y]).xyz;
+  vec3 c = trcFetchPoints(ids[corners.z]).xyz;
   point = a;
   normal = cross(b - a, c - a);
 }
@@ -90,7 +91,7 @@ void trcLoadFace(uint tet, int face, out vec3 point, out vec3 normal)
 // neighbours and four faces would hold eight registers through the step).
 uvec4 trcLoadNeighborWords(uint tet)
 {
-  return texelFetch(in_TetNeighbors, int(tet));
+  return trcFetchTetNeighbors(tet);
 }
 
 // The neighbour across face f, or TRC_NO_NEIGHBOR.

@@ -256,11 +256,25 @@ int TestRealMesh(int argc, char* argv[])
 
   vtkNew<vtkTetMeshCompactLayout> compact;
   compact->AddObserver(vtkCommand::ErrorEvent, errors);
-  compact->SetMaximumTextureBufferSize(10000); // 12936 tetrahedra
-  TRC_CHECK(!compact->Build(mesh));
+  // Larger than one texture buffer: split over buffers of a power of two texels (8192 of the
+  // 10000 allowed), two per tetrahedron array here (12936 tetrahedra, 2896 points), up to
+  // MaximumTextureBuffersPerArray.
+  compact->SetMaximumTextureBufferSize(10000);
+  TRC_CHECK(compact->Build(mesh));
+  TRC_CHECK(compact->GetTextureBufferShift() == 13 && compact->GetTextureBufferSize() == 8192);
+  TRC_CHECK(compact->GetNumberOfTextureBuffers(vtkTetMeshCompactLayout::TetPointsArray) == 2);
+  TRC_CHECK(compact->GetNumberOfTextureBuffers(vtkTetMeshCompactLayout::TetNeighborsArray) == 2);
+  TRC_CHECK(compact->GetNumberOfTextureBuffers(vtkTetMeshCompactLayout::PointsArray) == 1);
+  TRC_CHECK(compact->GetNumberOfTextureBuffers(99) == 0);
+  TRC_CHECK_EMPTY(trc::CheckCompactLayout(mesh, compact));
+  compact->SetMaximumTextureBuffersPerArray(1);
+  TRC_CHECK(!compact->Update(mesh));
   TRC_CHECK(errors->Count == 2);
-  TRC_CHECK(std::string(compact->GetErrorMessage()).find("maximum texture buffer size 10000") !=
+  TRC_CHECK(std::string(compact->GetErrorMessage())
+              .find("needs 2 texture buffers of 8192 texels for an array of 12936 texels, more "
+                    "than the 1 allowed per array (maximum texture buffer size 10000 texels)") !=
     std::string::npos);
+  compact->SetMaximumTextureBuffersPerArray(8);
   compact->SetMaximumTextureBufferSize(1 << 27);
   TRC_CHECK(compact->Build(mesh));
   TRC_CHECK_EMPTY(trc::CheckCompactLayout(mesh, compact));
