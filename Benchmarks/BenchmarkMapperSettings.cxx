@@ -39,7 +39,7 @@ using M = vtkTiledRayCastVolumeMapper;
 // pipeline, any other the fragment pipeline), with these settings; `table` > 0 sets the tables'
 // scalar size (and half of it as their length size).
 Setting Ours(vtkUnstructuredGrid* grid, const std::string& name, int mode, int layout, int n,
-  int tile, int table, int queryInterval = 4, bool skipping = true)
+  int tile, int table, int queryInterval = 4, bool skipping = true, vtkIdType bufferTexels = 0)
 {
   const int pipeline = name.rfind("compute", 0) == 0 ? M::COMPUTE_PIPELINE : M::FRAGMENT_PIPELINE;
   return { "ours", name,
@@ -54,6 +54,7 @@ Setting Ours(vtkUnstructuredGrid* grid, const std::string& name, int mode, int l
       m->SetTileSize(tile);
       m->SetOcclusionQueryInterval(queryInterval);
       m->SetEmptySpaceSkipping(skipping);
+      m->SetMaximumTextureBufferSize(bufferTexels);
       if (table > 0)
       {
         m->SetPreIntegrationTableScalarSize(table);
@@ -97,6 +98,27 @@ std::vector<Setting> OurSettings(vtkUnstructuredGrid* grid, const Options& o)
   const int partial = M::PARTIAL_PRE_INTEGRATION, compact = M::COMPACT_LAYOUT;
   const int automatic = M::AUTOMATIC_INTEGRATION;
   ours("compute default", automatic, compact, 0, 256, 0);
+  if (o.Sweep == "default")
+  {
+    return settings; // the dataset ladder's largest rungs
+  }
+  if (o.Sweep == "buffers")
+  {
+    // The mesh split over texture buffers as meshes above the GPU's largest texture buffer are
+    // (134M tetrahedra on NVIDIA's): buffers of the least power of two texels that is at least
+    // a quarter (then an eighth) of the tetrahedra, 3 to 4 (5 to 8) buffers per array.
+    for (int parts : { 4, 8 })
+    {
+      vtkIdType texels = 1;
+      while (texels * parts < grid->GetNumberOfCells())
+      {
+        texels *= 2;
+      }
+      settings.push_back(Ours(grid, "compute buffers T/" + std::to_string(parts), automatic,
+        compact, 0, 256, 0, 4, true, texels));
+    }
+    return settings;
+  }
   if (o.TransferFunction != "ramp")
   {
     ours("compute no-skipping", automatic, compact, 0, 256, 0, 4, false);
@@ -225,7 +247,7 @@ std::vector<Setting> trcmappers::MakeSettings(vtkUnstructuredGrid* grid, const O
     return DefaultsSweep(grid);
   }
   std::vector<Setting> settings = OurSettings(grid, o);
-  if (!o.OursOnly && o.Others)
+  if (!o.OursOnly && o.Others && o.Sweep != "default" && o.Sweep != "buffers")
   {
     AddOtherMappers(settings, grid, o, size);
   }

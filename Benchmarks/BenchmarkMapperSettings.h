@@ -35,7 +35,7 @@ struct Options
   bool OursOnly = false;
   bool Others = true;
   bool ProjectedTetrahedraOnly = false;
-  std::string Sweep = "quick"; // quick, full or defaults
+  std::string Sweep = "quick"; // quick, full, defaults, pipelines, default or buffers
   vtkIdType ZSweepMaxTets = 300000;
   std::vector<int> Resample = { 64, 128, 256 };
   bool Reference = true;

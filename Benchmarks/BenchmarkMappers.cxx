@@ -12,14 +12,18 @@
 // path, transfer function and image size, and writes one CSV row per (scene, mapper, setting,
 // image size). See docs/benchmarks.md for the protocol.
 //
-//   BenchmarkMappers [options] <mesh.vtu> [<mesh.vtu> ...]
+//   BenchmarkMappers [options] <mesh.vtu | generated:RUNG> [...]
+//     generated:RUNG    a rung made in memory (GeneratedMeshes.h: wavelet6_100m, gym6_300m, ...)
 //     --size N          image side in pixels (repeatable; default 512)
 //     --frames F        timed frames per setting, along a full turn of the camera (default 12)
 //     --csv FILE        append rows to FILE (default: standard output); a header when new
 //     --ours-only       only our default setting (the scaling runs on the dataset ladder)
-//     --sweep quick|full|defaults|pipelines  our settings (default quick); "defaults" times
-//                       only ours, over the fragment pipeline's tile sizes, tets per pass and
-//                       occlusion-query intervals; "pipelines" only ours, each pipeline's default
+//     --sweep quick|full|defaults|pipelines|default|buffers  our settings (default quick);
+//                       "defaults" times only ours, over the fragment pipeline's tile sizes, tets
+//                       per pass and occlusion-query intervals; "pipelines" only ours, each
+//                       pipeline's default; "default" only our default (the ladder's largest
+//                       rungs); "buffers" our default, then with the mesh split over 3 to 4
+//                       and 5 to 8 texture buffers (what meshes above 134M tetrahedra cost)
 //     --no-others       leave VTK's mappers out
 //     --pt-only         of VTK's mappers, only the projected tetrahedra (large meshes and images)
 //     --zsweep-max-tets T  ZSweep only up to T tets and 512 px (default 300000)
@@ -39,7 +43,9 @@
 //                       is named mesh+T unless ramp, and ours is also timed without empty-space
 //                       skipping ("compute no-skipping")
 //
-// Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own;
+// Every setting: the first frame (mesh build, upload, shader compilation) is timed on its own,
+// with the mapper's mesh build time and the host memory it peaked at beyond what the process held
+// before (Linux: VmHWM after the peak was reset through /proc/self/clear_refs), per tetrahedron;
 // then, after half a second of warm-up frames, F frames, each Render() followed by glFinish
 // (WaitForCompletion), wall clock and GPU timer; the error is measured on the first view against
 // vtkTetReferenceRenderer's exact image. Our rows also hold the median GPU time of each phase and
@@ -52,6 +58,7 @@
 #include "BenchmarkFrames.h"
 #include "BenchmarkMapperSettings.h"
 #include "BenchmarkMeshOrder.h"
+#include "GeneratedMeshes.h"
 #include "TiledRayCastSharedScenes.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -101,7 +108,8 @@ struct Row
   std::string Pipeline;
   double FirstHitMs = NAN, PeelingMs = NAN, RayCastingMs = NAN, CompositingMs = NAN, Rays = NAN,
          MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN,
-         MapperGpuMs = NAN, MapperCpuMs = NAN, SampleDistance = NAN;
+         MapperGpuMs = NAN, MapperCpuMs = NAN, SampleDistance = NAN, MeshBuildMs = NAN,
+         HostPeakBytesPerTet = NAN;
 };
 
 const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
@@ -109,7 +117,8 @@ const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms
                      "rmse,p999,max_err,lost_pixels,layers,median_passes_per_tile,"
                      "max_passes_per_tile,pipeline,first_hit_ms,peeling_ms,ray_casting_ms,"
                      "compositing_ms,rays,mean_steps_per_ray,max_steps_per_ray,entries,"
-                     "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms,image_sample_distance";
+                     "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms,image_sample_distance,"
+                     "mesh_build_ms,host_peak_bytes_per_tet";
 
 std::string Cell(double v)
 {
@@ -134,7 +143,34 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.FirstHitMs) << "," << Cell(r.PeelingMs) << "," << Cell(r.RayCastingMs) << ","
      << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
      << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
-     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << "\n";
+     << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << ","
+     << Cell(r.MeshBuildMs) << "," << Cell(r.HostPeakBytesPerTet) << "\n";
+}
+
+// A field of /proc/self/status in bytes (VmRSS, VmHWM), or NaN where there is none.
+double ProcessMemory(const char* field)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  const size_t length = std::strlen(field);
+  while (std::getline(status, line))
+  {
+    if (line.compare(0, length, field) == 0 && line.size() > length && line[length] == ':')
+    {
+      return 1024.0 * std::atof(line.c_str() + length + 1); // "VmHWM:  123456 kB"
+    }
+  }
+  return NAN;
+}
+
+// Resets the process's peak resident memory (VmHWM) to its current size; false where the kernel
+// cannot (then the peak is the process's whole peak).
+bool ResetPeakMemory()
+{
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5";
+  clear.flush();
+  return clear.good();
 }
 
 // The median of the timed frames' values; NaN (an empty cell) for none.
@@ -235,9 +271,9 @@ bool ParseOptions(int argc, char* argv[], Options& o)
     {
       o.Sweep = next();
       if (o.Sweep != "quick" && o.Sweep != "full" && o.Sweep != "defaults" &&
-        o.Sweep != "pipelines")
+        o.Sweep != "pipelines" && o.Sweep != "default" && o.Sweep != "buffers")
       {
-        std::cerr << "--sweep takes quick, full, defaults or pipelines\n";
+        std::cerr << "--sweep takes quick, full, defaults, pipelines, default or buffers\n";
         return false;
       }
     }
@@ -372,14 +408,25 @@ void TimeSetting(const Setting& setting, vtkRenderWindow* window, vtkRenderer* r
   volume->SetProperty(property);
   renderer->AddVolume(volume);
 
-  // First frame: everything the mapper prepares.
+  // First frame: everything the mapper prepares, and the host memory it takes to.
   SetView(renderer, grid, 0, o.Frames);
+  const double before = ProcessMemory("VmRSS");
+  const bool peakReset = ResetPeakMemory();
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   window->Render();
   window->WaitForCompletion();
   timer->StopTimer();
   row.FirstFrameMs = 1000.0 * timer->GetElapsedTime();
+  if (peakReset)
+  {
+    row.HostPeakBytesPerTet = (ProcessMemory("VmHWM") - before) / row.Tets;
+  }
+  auto* ourMapper = vtkTiledRayCastVolumeMapper::SafeDownCast(mapper);
+  if (ourMapper)
+  {
+    row.MeshBuildMs = 1000.0 * ourMapper->GetStatistics()->GetMeshBuildTime();
+  }
 
   // Interacting: the rate for the warm-up (the sample distance settles) and timed frames.
   window->SetDesiredUpdateRate(setting.Rate > 0 ? setting.Rate : 0.0001);
@@ -470,6 +517,36 @@ void TimeSetting(const Setting& setting, vtkRenderWindow* window, vtkRenderer* r
   renderer->RemoveVolume(volume); // releases its graphics resources
 }
 
+// The mesh of a .vtu file, or of a generated rung ("generated:RUNG", made in memory and checked
+// against its expected counts); null with a message when neither works.
+vtkSmartPointer<vtkUnstructuredGrid> ReadOrGenerate(const std::string& path)
+{
+  const std::string prefix = "generated:";
+  if (path.compare(0, prefix.size(), prefix) != 0)
+  {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    return reader->GetOutput();
+  }
+  const generated::Rung* rung = generated::FindRung(path.substr(prefix.size()));
+  if (!rung)
+  {
+    std::cerr << path << ": no such generated rung (GeneratedMeshes.cxx lists them)\n";
+    return nullptr;
+  }
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = generated::MakeRung(*rung);
+  timer->StopTimer();
+  if (grid)
+  {
+    std::cerr << rung->Name << ": " << rung->Tetrahedra << " tetrahedra made in memory in "
+              << timer->GetElapsedTime() << " s, process at " << ProcessMemory("VmRSS") / 1e9
+              << " GB\n";
+  }
+  return grid;
+}
 } // namespace
 
 int main(int argc, char* argv[])
@@ -499,17 +576,20 @@ int main(int argc, char* argv[])
 
   for (const std::string& path : o.Meshes)
   {
-    vtkNew<vtkXMLUnstructuredGridReader> reader;
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    vtkSmartPointer<vtkUnstructuredGrid> ordered = ReorderMesh(reader->GetOutput(), o.Order);
+    vtkSmartPointer<vtkUnstructuredGrid> input = ReadOrGenerate(path);
+    if (!input)
+    {
+      return EXIT_FAILURE;
+    }
+    vtkSmartPointer<vtkUnstructuredGrid> ordered = ReorderMesh(input, o.Order);
+    input = nullptr;
     vtkUnstructuredGrid* grid = ordered;
     if (grid->GetNumberOfCells() == 0 || !grid->GetPointData()->GetScalars())
     {
       std::cerr << path << ": no cells or no point scalars; skipped\n";
       continue;
     }
-    std::string mesh = path.substr(path.find_last_of('/') + 1);
+    std::string mesh = path.substr(path.find_last_of("/:") + 1);
     const std::string scene = mesh.substr(0, mesh.find('.')) +
       (o.Order == "input" ? "" : "+" + o.Order) +
       (o.TransferFunction == "ramp" ? "" : "+" + o.TransferFunction) + (o.Shade ? "+shaded" : "");

@@ -5,6 +5,7 @@
 # On the GPU machine, through the bundle (Module/bundle-gpu.sh, then on the device):
 #   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
+# "large" the ladder's 100M and 300M rungs made in memory, and meshes split over texture buffers;
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
 # "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
 # moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame); "empty"
@@ -15,7 +16,7 @@
 # frame is a camera jump, which the compute pipeline verifies (waits for the frame's counts).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-kind="${1:?cpu, gpu, pipelines, defaults, ladder, deforming, empty, overlapping or translucent}"
+kind="${1:?cpu, gpu, pipelines, defaults, ladder, large, deforming, empty, overlapping or translucent}"
 out="${2:?output directory}"
 mkdir -p "$out"
 build="${TRC_BUNDLE_ROOT:+$TRC_BUNDLE_ROOT/build}"
@@ -153,6 +154,20 @@ case "$kind" in
       "$meshes/bluntfin_tets.vtu" "$meshes/post_tets6_conforming.vtu" \
       "$meshes/comb6teeth_tetgen_270k.vtu" "$out/ladder/torus_1m.vtu"
     drop_ladder
+    suffix="GPU"
+    ;;
+  large)
+    # The ladder's largest rungs, made in memory (GeneratedMeshes.h: 100M and 300M tetrahedra,
+    # convex and non-convex), our default at 1024², one process each (its host memory peak is
+    # its own); first, what reading a mesh split over several texture buffers costs (as meshes
+    # above 134M tetrahedra are on NVIDIA's GPUs), on the GPU meshes.
+    gpu_meshes bluntfin post torus_1m
+    "$bench" --sweep buffers --size 1024 --frames 20 --csv "$out/buffers.csv" "${files[@]}"
+    drop_ladder
+    for rung in ${TRC_LARGE_RUNGS:-wavelet6_100m gym6_100m wavelet6_300m gym6_300m}; do
+      "$bench" --sweep default --no-reference --size 1024 --frames 20 --csv "$out/large.csv" \
+        "generated:$rung" || echo "$rung: failed (status $?)"
+    done
     suffix="GPU"
     ;;
   ladder)
