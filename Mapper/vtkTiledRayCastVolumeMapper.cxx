@@ -195,6 +195,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfPassesPerLayer: " << this->MaximumNumberOfPassesPerLayer << "\n";
   os << indent << "MaximumTextureBufferSize: " << this->MaximumTextureBufferSize << "\n";
   os << indent << "MaximumTextureSize: " << this->MaximumTextureSize << "\n";
+  os << indent << "MaximumGPUMemory: " << this->MaximumGPUMemory << "\n";
   os << indent << "PreIntegrationTableScalarSize: " << this->PreIntegrationTableScalarSize << "\n";
   os << indent << "PreIntegrationTableLengthSize: " << this->PreIntegrationTableLengthSize << "\n";
   os << indent << "SynchronousStatistics: " << this->SynchronousStatistics << "\n";

@@ -346,6 +346,18 @@ public:
 
   ///@{
   /**
+   * The most GPU memory the mesh may take, in bytes. 0 (the default) means what the driver
+   * reports free (NVIDIA's GL_NVX_gpu_memory_info; no limit where the driver does not say); a
+   * positive value can only lower it. A mesh that needs more is refused with an error that names
+   * both sizes, and is never uploaded: before it is built where the input's counts tell (an
+   * unstructured grid of one linear 3D cell type), once its layout is packed otherwise.
+   */
+  vtkSetClampMacro(MaximumGPUMemory, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumGPUMemory, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * How a scalar array of several components is reduced to the one scalar that is rendered
    * (vtkTetScalarSelection has the rule; the exact reference renderer follows the same).
    * DEFAULT (the default) is VTK 9.1's rule for unstructured grids (vtkProjectedTetrahedraMapper):
@@ -492,6 +504,7 @@ protected:
   int MaximumNumberOfPassesPerLayer = 1000000;
   vtkIdType MaximumTextureBufferSize = 0;
   int MaximumTextureSize = 0;
+  vtkIdType MaximumGPUMemory = 0;
   int PreIntegrationTableScalarSize = 0;
   int PreIntegrationTableLengthSize = 0;
   bool SynchronousStatistics = false;

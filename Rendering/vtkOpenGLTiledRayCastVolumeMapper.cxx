@@ -165,8 +165,10 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
   vtkDataObject* dataObject, vtkVolumeProperty* property)
 {
   std::string error;
+  this->MemoryBudget.Update(this->Context.Window, this->Self->GetMaximumGPUMemory(),
+    this->MeshTextures.GetBytes() + this->VisibleMesh.GetBytes());
   if (!this->Reported(this->Mesh.Update(dataObject, property, this->Context.MaxTextureSize,
-                        this->Context.MaxTextureBufferSize, error),
+                        this->Context.MaxTextureBufferSize, this->MemoryBudget, error),
         error))
   {
     return false;

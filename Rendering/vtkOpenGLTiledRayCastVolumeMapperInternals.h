@@ -33,6 +33,7 @@
 #include "vtkTiledRayCastIntegration.h"          // For vtkTiledRayCastIntegration
 #include "vtkTiledRayCastLighting.h"             // For vtkTiledRayCastLighting
 #include "vtkTiledRayCastMeshBuild.h"            // For vtkTiledRayCastMeshBuild
+#include "vtkTiledRayCastMemoryBudget.h"
 #include "vtkTiledRayCastMeshTextures.h"         // For vtkTiledRayCastMeshTextures
 #include "vtkTiledRayCastOpaqueDepth.h"          // For vtkTiledRayCastOpaqueDepth
 #include "vtkTiledRayCastPhaseTimers.h"          // For vtkTiledRayCastPhaseTimers
@@ -100,6 +101,7 @@ public:
   // CPU mesh and its layout.
   vtkTiledRayCastMeshBuild Mesh;
   vtkTiledRayCastMeshTextures MeshTextures;
+  vtkTiledRayCastMemoryBudget MemoryBudget; // what the mesh may take on the GPU
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
   vtkTiledRayCastVisibleMesh VisibleMesh;
 

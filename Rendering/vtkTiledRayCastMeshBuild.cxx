@@ -21,6 +21,7 @@
 #include "vtkTetMeshLayout.h"
 #include "vtkTetMeshPaperLayout.h"
 #include "vtkTetMeshValidationReport.h"
+#include "vtkTiledRayCastMemoryBudget.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastVolumeMapper.h"
 #include "vtkTimerLog.h"
@@ -101,7 +102,8 @@ vtkTetMeshLayout* vtkTiledRayCastMeshBuild::GetLayout()
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProperty* property,
-  int maxTextureSize, int maxTextureBufferSize, std::string& error)
+  int maxTextureSize, int maxTextureBufferSize, const vtkTiledRayCastMemoryBudget& budget,
+  std::string& error)
 {
   vtkTiledRayCastVolumeMapper* self = this->Mapper;
   vtkTetMeshBuilder* builder = this->Builder;
@@ -113,6 +115,15 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   if (!input)
   {
     error = inputError + ". Nothing is drawn.";
+    return false;
+  }
+
+  // What cannot fit on the GPU is refused before it is built, where the input's counts tell.
+  const bool paper = self->GetMeshLayout() == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  std::string budgetError;
+  if (!budget.CheckInput(input, paper, budgetError))
+  {
+    error = "Cannot draw the input: " + budgetError + ". Nothing is drawn.";
     return false;
   }
 
@@ -179,6 +190,14 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   {
     error = std::string("Cannot pack the mesh for this GPU: ") + layout->GetErrorMessage() +
       ". Nothing is drawn.";
+    return false;
+  }
+  // The visible set (a bit per tetrahedron) and the entry faces (a word each) come with it.
+  const vtkIdType visibleBytes =
+    (mesh->GetNumberOfTetrahedra() + 7) / 8 + 4 * mesh->GetNumberOfBoundaryFaces();
+  if (!budget.CheckLayout(layout, visibleBytes, budgetError))
+  {
+    error = "Cannot draw the input: " + budgetError + ". Nothing is drawn.";
     return false;
   }
   timer->StopTimer();

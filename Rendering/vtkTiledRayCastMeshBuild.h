@@ -39,6 +39,7 @@ class vtkDataObject;
 class vtkTetMesh;
 class vtkTetMeshBuilder;
 class vtkTetMeshLayout;
+class vtkTiledRayCastMemoryBudget;
 class vtkTiledRayCastVolumeMapper;
 class vtkVolumeProperty;
 
@@ -51,10 +52,11 @@ public:
   /**
    * Build the mesh of `input` (the scalars `property` selects) and its layout, within textures
    * of `maxTextureSize` and texture buffers of `maxTextureBufferSize` texels (the GPU's
-   * limits). False, with `error` set, when nothing can be drawn.
+   * limits) and within `budget` (checked before the build where the input tells, and on the
+   * layout). False, with `error` set, when nothing can be drawn.
    */
   bool Update(vtkDataObject* input, vtkVolumeProperty* property, int maxTextureSize,
-    int maxTextureBufferSize, std::string& error);
+    int maxTextureBufferSize, const vtkTiledRayCastMemoryBudget& budget, std::string& error);
 
   /**
    * Whether the layout object was replaced since the last call (its arrays must all be

@@ -19,6 +19,7 @@
 
 #include "vtkActor.h"
 #include "vtkAppendFilter.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkConeSource.h"
@@ -175,6 +176,50 @@ bool RefusedInputs(vtkUnstructuredGrid* spx)
   for (const auto& setting : settings)
   {
     ok = Refused(setting.Label, spx, setting.Message, setting.Configure) && ok;
+  }
+  return ok;
+}
+
+// More than MaximumGPUMemory: refused before the build where the input's counts tell (the builder
+// never runs: no progress strictly between 0 and 1, which only the build reports; the pipeline
+// reports 0 and 1 around every update), once the layout is packed otherwise, the sizes named.
+// spx: 12936 tetrahedra and 2896 points, 32 x 12936 + 16 x 2896 = 460288 bytes in the compact
+// layout, and 12936 / 8 + 4 x 2760 more for the visible set and the entry faces.
+bool GPUMemoryRefused(vtkUnstructuredGrid* spx)
+{
+  int progressEvents = 0;
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&progressEvents);
+  progress->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void* data)
+    {
+      const double value = *static_cast<double*>(data);
+      *static_cast<int*>(count) += value > 0.0 && value < 1.0 ? 1 : 0;
+    });
+  const struct
+  {
+    const char* Label;
+    vtkIdType Limit;
+    const char* Message;
+    bool Built;
+  } cases[] = {
+    { "GPU memory, known before the build", 100000, "known before the build", false },
+    { "GPU memory, known from the layout", 460289, "needs 473 kB on the GPU (472945 bytes), more than the 460 kB", true },
+  };
+  bool ok = true;
+  for (const auto& c : cases)
+  {
+    progressEvents = 0;
+    ok = Refused(c.Label, spx, c.Message,
+           [&](vtkTiledRayCastVolumeMapper* m)
+           {
+             m->SetMaximumGPUMemory(c.Limit);
+             m->AddObserver(vtkCommand::ProgressEvent, progress);
+           }) &&
+      ok;
+    ok = Expect((progressEvents > 0) == c.Built,
+           std::string(c.Label) + (c.Built ? ": built" : ": not built")) &&
+      ok;
   }
   return ok;
 }
@@ -494,8 +539,9 @@ int TestTiledRayCastBadInput(int argc, char* argv[])
     return EXIT_FAILURE;
   }
   bool ok = true;
-  for (auto check : { RefusedInputs, SevenClippingPlanes, ShadingWarnings, VolumetricPeeling,
-         NoInputAfterFrame, NaNScalars, DegenerateCells, NormalService, TranslucentGeometry })
+  for (auto check :
+    { RefusedInputs, GPUMemoryRefused, SevenClippingPlanes, ShadingWarnings, VolumetricPeeling,
+      NoInputAfterFrame, NaNScalars, DegenerateCells, NormalService, TranslucentGeometry })
   {
     ok = check(spx) && ok;
   }
