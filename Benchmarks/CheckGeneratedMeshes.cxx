@@ -14,7 +14,12 @@
 // by at most two tetrahedra, the boundary faces counted voxel by voxel), then the mapper's image
 // against the exact reference (the tests' bounds: RMSE 0.75, max 2 / 255) at 160 x 160.
 //
-//   CheckGeneratedMeshes [--no-image] [RUNG ...]     (default wavelet6_1m gym6_1m)
+//   CheckGeneratedMeshes [--no-image] [--memory] [RUNG ...]   (default wavelet6_1m gym6_1m)
+//
+// --memory prints where the host memory goes, in bytes per tetrahedron beyond what the process
+// held before (Linux /proc/self/status; the peak reset through /proc/self/clear_refs): the mesh
+// builder (its scratch apart), the compact layout, then the mapper's first frame at 1024^2 (the
+// same two and what the OpenGL driver keeps).
 //
 // The larger rungs take what their size takes (gym6_300m: 30 GB of host memory); the test of
 // the build runs the 1M ones.
@@ -23,9 +28,12 @@
 
 #include "vtkTetMesh.h"
 #include "vtkTetMeshBuilder.h"
+#include "vtkTetMeshCompactLayout.h"
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTimerLog.h"
 
+#include <cstring>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -56,6 +64,69 @@ bool CheckMesh(const generated::Rung& rung, vtkUnstructuredGrid* grid)
   return Expect(report->GetNumberOfBoundaryFaces() == boundary, name + ": boundary faces") && ok;
 }
 
+// A field of /proc/self/status in bytes (VmRSS, VmHWM).
+double ProcessMemory(const char* field)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  const size_t length = std::strlen(field);
+  while (std::getline(status, line))
+  {
+    if (line.compare(0, length, field) == 0 && line.size() > length && line[length] == ':')
+    {
+      return 1024.0 * std::atof(line.c_str() + length + 1);
+    }
+  }
+  return 0.0;
+}
+
+// Where the host memory goes: the builder, the layout, the mapper's first frame.
+void ReportMemory(const generated::Rung& rung, vtkUnstructuredGrid* grid)
+{
+  const double tets = static_cast<double>(grid->GetNumberOfCells());
+  double base = 0.0;
+  auto start = [&]()
+  {
+    base = ProcessMemory("VmRSS");
+    std::ofstream("/proc/self/clear_refs") << "5";
+  };
+  auto say = [&](const char* what, double extra)
+  {
+    std::cout << rung.Name << " memory: " << what << ": peak "
+              << (ProcessMemory("VmHWM") - base) / tets << " B/tet, then "
+              << (ProcessMemory("VmRSS") - base + extra) / tets << " B/tet\n";
+  };
+  start();
+  {
+    vtkNew<vtkTetMeshBuilder> builder;
+    builder->SetSpatialOrdering(true); // as the mapper does
+    vtkTetMesh* mesh = builder->Build(grid);
+    say("mesh builder", 0.0);
+    std::cout << rung.Name << " memory: builder scratch " << builder->GetScratchMemorySize() / tets
+              << " B/tet\n";
+    const double built = ProcessMemory("VmRSS");
+    vtkNew<vtkTetMeshCompactLayout> layout;
+    layout->Build(mesh);
+    std::cout << rung.Name << " memory: compact layout " << (ProcessMemory("VmRSS") - built) / tets
+              << " B/tet\n";
+  }
+  start();
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  mapper->SetInputData(grid);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(trctest::MakePropertyFor(grid, 0.05));
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddVolume(volume);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(1024, 1024);
+  window->AddRenderer(renderer);
+  window->Render();
+  say("mapper's first frame", 0.0);
+  std::cout << rung.Name << ": " << mapper->GetStatistics()->GetSummary() << "\n";
+}
+
 // Our default mapper's image of `grid` against the exact reference.
 bool CheckImage(const generated::Rung& rung, vtkUnstructuredGrid* grid)
 {
@@ -82,6 +153,7 @@ bool CheckImage(const generated::Rung& rung, vtkUnstructuredGrid* grid)
 int main(int argc, char* argv[])
 {
   bool image = true;
+  bool memory = false;
   std::vector<std::string> names;
   for (int i = 1; i < argc; ++i)
   {
@@ -89,6 +161,10 @@ int main(int argc, char* argv[])
     if (arg == "--no-image")
     {
       image = false;
+    }
+    else if (arg == "--memory")
+    {
+      memory = true;
     }
     else
     {
@@ -114,6 +190,10 @@ int main(int argc, char* argv[])
     {
       ok = false;
       continue;
+    }
+    if (memory)
+    {
+      ReportMemory(*rung, grid);
     }
     ok = CheckMesh(*rung, grid) && ok;
     ok = (!image || CheckImage(*rung, grid)) && ok;

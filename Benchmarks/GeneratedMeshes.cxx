@@ -22,6 +22,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -140,6 +141,48 @@ std::vector<vtkIdType> SliceOffsets(int slices, CountSlice count)
   return offsets;
 }
 
+// The Morton code of lattice point (i, j, k), 21 bits per axis.
+uint64_t MortonCode(vtkIdType i, vtkIdType j, vtkIdType k)
+{
+  uint64_t code = 0;
+  for (int b = 0; b < 21; ++b)
+  {
+    code |= ((uint64_t(i) >> b & 1u) << (3 * b)) | ((uint64_t(j) >> b & 1u) << (3 * b + 1)) |
+      ((uint64_t(k) >> b & 1u) << (3 * b + 2));
+  }
+  return code;
+}
+
+// `pointIds` (lattice index to point id, -1 for an unused point; empty: every point, in lattice
+// order) renumbered along the Morton curve of the lattice indices of an m^3 lattice.
+void RenumberAlongMorton(vtkIdType m, std::vector<vtkIdType>& pointIds)
+{
+  const vtkIdType lattice = m * m * m;
+  std::vector<std::pair<uint64_t, vtkIdType>> keyed(static_cast<size_t>(lattice));
+  vtkSMPTools::For(0, lattice, 1 << 16,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        const bool used = pointIds.empty() || pointIds[p] >= 0;
+        keyed[p] = { used ? MortonCode(p % m, (p / m) % m, p / (m * m)) : ~uint64_t(0), p };
+      }
+    });
+  vtkSMPTools::Sort(keyed.begin(), keyed.end());
+  pointIds.assign(static_cast<size_t>(lattice), -1);
+  vtkSMPTools::For(0, lattice, 1 << 16,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType r = begin; r < end; ++r)
+      {
+        if (keyed[r].first != ~uint64_t(0))
+        {
+          pointIds[keyed[r].second] = r;
+        }
+      }
+    });
+}
+
 template <typename IdArray>
 vtkSmartPointer<vtkCellArray> MakeCells(const Layout& layout,
   const std::vector<vtkIdType>& voxelOffsets, const std::vector<vtkIdType>& pointIds)
@@ -216,7 +259,7 @@ const Rung* GetRungs(int& count)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(const std::string& family, int n)
+vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(const std::string& family, int n, bool mortonPoints)
 {
   if ((family != "wavelet6" && family != "gym6") || n < 1)
   {
@@ -278,6 +321,10 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(const std::string& family, int n)
       });
     numPoints = pointOffsets[m];
   }
+  if (mortonPoints)
+  {
+    RenumberAlongMorton(m, pointIds);
+  }
   vtkNew<vtkFloatArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(numPoints);
@@ -326,9 +373,9 @@ vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(const std::string& family, int n)
 }
 
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkUnstructuredGrid> MakeRung(const Rung& rung)
+vtkSmartPointer<vtkUnstructuredGrid> MakeRung(const Rung& rung, bool mortonPoints)
 {
-  vtkSmartPointer<vtkUnstructuredGrid> grid = MakeMesh(rung.Family, rung.Voxels);
+  vtkSmartPointer<vtkUnstructuredGrid> grid = MakeMesh(rung.Family, rung.Voxels, mortonPoints);
   if (grid &&
     (grid->GetNumberOfPoints() != rung.Points || grid->GetNumberOfCells() != rung.Tetrahedra))
   {

@@ -48,11 +48,14 @@ const Rung* FindRung(const std::string& name);
 const Rung* GetRungs(int& count);
 
 // The mesh of `family` on n^3 voxels; null (with a message on stderr) for an unknown family.
-vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(const std::string& family, int n);
+// The points are numbered in lattice order (x fastest), or with `mortonPoints` along a Morton
+// curve of their lattice indices (a tetrahedron's four points then lie close in memory).
+vtkSmartPointer<vtkUnstructuredGrid> MakeMesh(
+  const std::string& family, int n, bool mortonPoints = false);
 
 // The mesh of `rung`, checked against its expected counts (null, with a message, when they
 // differ).
-vtkSmartPointer<vtkUnstructuredGrid> MakeRung(const Rung& rung);
+vtkSmartPointer<vtkUnstructuredGrid> MakeRung(const Rung& rung, bool mortonPoints = false);
 
 // The boundary triangles the mesh of `family` on n^3 voxels has: two per voxel face between a
 // kept voxel and a voxel not kept or outside (counted voxel by voxel, apart from MakeMesh).

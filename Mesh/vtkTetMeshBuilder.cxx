@@ -305,10 +305,19 @@ void vtkTetMeshBuilder::RunTopologyStages()
                     << " cells of dimension lower than 3 (or of unsupported types) and "
                     << report->GetNumberOfInvalidCells() << " invalid cells (bad point ids).");
   }
+  // Scratch beyond MaximumKeptScratchMemory goes when its stage ends.
+  auto trimScratch = [&]()
+  {
+    if (state.GetScratchSize() > this->MaximumKeptScratchMemory)
+    {
+      state.ReleaseScratch();
+    }
+  };
   if (this->SpatialOrdering)
   {
     ScopedEvent event("vtkTetMeshBuilder: spatial sort");
     vtkTetMeshSpatialOrder::Sort(state);
+    trimScratch();
   }
   {
     ScopedEvent event("vtkTetMeshBuilder: orientation");
@@ -320,11 +329,13 @@ void vtkTetMeshBuilder::RunTopologyStages()
     vtkTetMeshFaceMatching::MatchFaces(state);
     vtkTetMeshOrientation::OrientDegenerate(state);
     vtkTetMeshFaceMatching::CollectBoundaryFaces(state);
+    trimScratch();
   }
   ReportProgress(this, 0.85);
   {
     ScopedEvent event("vtkTetMeshBuilder: duplicates and cracks");
     vtkTetMeshDefectSearch::FindDuplicatesAndCracks(state);
+    trimScratch();
   }
   ReportProgress(this, 0.95);
 }
@@ -390,6 +401,7 @@ void vtkTetMeshBuilder::PrintSelf(ostream& os, vtkIndent indent)
   this->ScalarSelection->PrintSelf(os, indent.GetNextIndent());
   os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
   os << indent << "DegeneracyTolerance: " << this->DegeneracyTolerance << "\n";
+  os << indent << "MaximumKeptScratchMemory: " << this->MaximumKeptScratchMemory << "\n";
   os << indent << "LastRebuild: " << GetRebuildAsString(this->LastRebuild) << "\n";
   os << indent << "LastBuildTime: " << this->LastBuildTime << "\n";
   os << indent << "Mesh: " << this->State->Mesh.GetPointer() << "\n";

@@ -162,9 +162,16 @@ public:
    * and first touching fresh memory costs more than the work done in it. ReleaseScratchMemory()
    * frees them (a mapper may call it once the mesh is built, when topology changes are rare);
    * GetScratchMemorySize() says how many bytes they hold.
+   *
+   * Above MaximumKeptScratchMemory bytes (default 2^31: meshes of about 20M tetrahedra and more)
+   * they are not kept: each stage frees its own when it ends, so that the stages' scratch does
+   * not add up at the peak of a huge build (a spatially ordered build of 300M tetrahedra held
+   * 29 GB of scratch, 96 bytes a tetrahedron, on top of the mesh and the layout).
    */
   void ReleaseScratchMemory();
   vtkIdType GetScratchMemorySize();
+  vtkSetClampMacro(MaximumKeptScratchMemory, vtkIdType, 0, VTK_ID_MAX);
+  vtkGetMacro(MaximumKeptScratchMemory, vtkIdType);
   ///@}
 
   ///@{
@@ -183,6 +190,7 @@ protected:
   vtkNew<vtkTetScalarSelection> ScalarSelection;
   bool SpatialOrdering = false;
   double DegeneracyTolerance = 1e-12;
+  vtkIdType MaximumKeptScratchMemory = vtkIdType(1) << 31;
 
   int LastRebuild = RebuildNothing;
   double LastBuildTime = 0.0;

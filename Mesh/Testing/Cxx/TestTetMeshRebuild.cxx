@@ -352,6 +352,15 @@ int Everything(Pipeline& p, vtkUnstructuredGrid* grid)
   p.Builder->ReleaseScratchMemory();
   TRC_CHECK(p.Builder->GetScratchMemorySize() == 0);
   TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
+  // Beyond MaximumKeptScratchMemory each stage frees its scratch: none is left, and the mesh
+  // and its layouts are those of a build that keeps it.
+  p.Builder->SetDegeneracyTolerance(1e-12); // as the fresh builder's
+  p.Builder->SetMaximumKeptScratchMemory(0);
+  p.Builder->Invalidate();
+  p.Build(grid);
+  TRC_CHECK(p.Builder->GetScratchMemorySize() == 0);
+  TRC_CHECK_EMPTY(CompareWithFullBuild(grid, p));
+  p.Builder->SetMaximumKeptScratchMemory(vtkIdType(1) << 31);
 
   // Another input object with the same content: everything; Invalidate(): everything.
   vtkNew<vtkUnstructuredGrid> twin;
