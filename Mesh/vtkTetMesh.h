@@ -48,6 +48,65 @@
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
 
+#ifndef __VTK_WRAP__
+#include "vtkSmartPointer.h"     // For vtkSmartPointer
+#include "vtkTypeUInt32Array.h" // For vtkTetMeshWords
+
+#include <algorithm> // For std::fill, std::swap
+
+/**
+ * The storage of the mesh's point ids and neighbour words: a vtkTypeUInt32Array of 4
+ * components (one tuple per tetrahedron) behind the few std::vector operations the builder's
+ * stages use. A layout shares the array object itself instead of copying it (32 bytes a
+ * tetrahedron: 32 GB for a billion), and an object it holds always has the mesh's current
+ * values or, after swap(), the mesh's former ones; never memory freed under it. Unlike
+ * std::vector, resize() leaves new values undefined (every stage writes what it sizes).
+ */
+class vtkTetMeshWords
+{
+public:
+  explicit vtkTetMeshWords(const char* name)
+  {
+    this->Array->SetName(name);
+    this->Array->SetNumberOfComponents(4);
+  }
+  uint32_t* data() { return this->Array->GetPointer(0); }
+  const uint32_t* data() const { return this->Array->GetPointer(0); }
+  uint32_t* begin() { return this->data(); }
+  uint32_t* end() { return this->data() + this->size(); }
+  const uint32_t* begin() const { return this->data(); }
+  const uint32_t* end() const { return this->data() + this->size(); }
+  size_t size() const { return static_cast<size_t>(this->Array->GetNumberOfValues()); }
+  bool empty() const { return this->size() == 0; }
+  uint32_t& operator[](size_t i) { return this->data()[i]; }
+  uint32_t operator[](size_t i) const { return this->data()[i]; }
+  void clear() { this->Array->SetNumberOfValues(0); }
+  void resize(size_t n) { this->Array->SetNumberOfValues(static_cast<vtkIdType>(n)); }
+  void assign(size_t n, uint32_t value)
+  {
+    this->resize(n);
+    std::fill(this->begin(), this->end(), value);
+  }
+  void reserve(size_t n)
+  {
+    if (this->empty()) // Allocate() drops the values
+    {
+      this->Array->Allocate(static_cast<vtkIdType>(n));
+    }
+  }
+  /// Bytes allocated, and freeing them.
+  size_t capacity_bytes() const { return static_cast<size_t>(this->Array->GetSize()) * 4; }
+  void free() { this->Array->Initialize(); }
+  void push_back(uint32_t value) { this->Array->InsertNextValue(value); }
+  void swap(vtkTetMeshWords& other) { std::swap(this->Array, other.Array); }
+  /// The array itself (4 components, named), for a layout to share.
+  vtkTypeUInt32Array* GetArray() const { return this->Array; }
+
+private:
+  vtkSmartPointer<vtkTypeUInt32Array> Array = vtkSmartPointer<vtkTypeUInt32Array>::New();
+};
+#endif
+
 class vtkDoubleArray;
 class vtkTetMeshBuilder;
 class vtkTypeUInt32Array;
@@ -237,6 +296,13 @@ public:
   {
     return this->TetNeighbors.data();
   }
+  /**
+   * The arrays behind GetTetPoints() and GetTetNeighbors() (4 components, one tuple per
+   * tetrahedron), for a layout to share rather than copy: they hold the mesh's values until
+   * the next full build, which may give the mesh other array objects.
+   */
+  vtkTypeUInt32Array* GetTetPointsArray() const { return this->TetPoints.GetArray(); }
+  vtkTypeUInt32Array* GetTetNeighborsArray() const { return this->TetNeighbors.GetArray(); }
   const uint32_t* GetBoundaryFaces() const
   {
     return this->BoundaryFaces.data();
@@ -291,8 +357,10 @@ protected:
   friend class vtkTetMeshSpatialOrder;
 
   std::vector<double> Points;
-  std::vector<uint32_t> TetPoints;
-  std::vector<uint32_t> TetNeighbors;
+#ifndef __VTK_WRAP__
+  vtkTetMeshWords TetPoints{ "TetPoints" };
+  vtkTetMeshWords TetNeighbors{ "TetNeighbors" };
+#endif
   std::vector<uint32_t> BoundaryFaces;
   std::vector<uint32_t> TetInputCellIds;
   std::vector<uint8_t> TetFlags;

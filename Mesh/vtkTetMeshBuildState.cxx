@@ -32,6 +32,16 @@ void Free(std::vector<T>& v)
 {
   std::vector<T>().swap(v);
 }
+
+size_t Bytes(const vtkTetMeshWords& words)
+{
+  return words.capacity_bytes();
+}
+
+void Free(vtkTetMeshWords& words)
+{
+  words.free();
+}
 }
 
 //------------------------------------------------------------------------------

@@ -128,7 +128,7 @@ public:
   // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
   std::vector<uint64_t> SortKeys;
   std::vector<uint64_t> SortScratch;
-  std::vector<uint32_t> SortTetPoints;
+  vtkTetMeshWords SortTetPoints{ "TetPoints" }; // swapped with the mesh's
   std::vector<uint32_t> SortCellIds;
   // Likewise for duplicate points.
   std::vector<uint32_t> PointBuckets;

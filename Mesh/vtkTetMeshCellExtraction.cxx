@@ -314,7 +314,7 @@ bool vtkTetMeshCellExtraction::CopyAllTetrahedra(
   {
     return false;
   }
-  std::vector<uint32_t>& tetPoints = mesh->TetPoints;
+  vtkTetMeshWords& tetPoints = mesh->TetPoints;
   std::vector<uint32_t>& cellIds = mesh->TetInputCellIds;
   tetPoints.resize(4 * static_cast<size_t>(numCells));
   cellIds.resize(static_cast<size_t>(numCells));

@@ -35,13 +35,6 @@ ArrayT* NewArray(const char* name, int components)
   return array;
 }
 
-// A parallel copy of n words: a single thread does not saturate memory bandwidth here.
-void ParallelCopy(const uint32_t* from, vtkIdType n, uint32_t* to)
-{
-  vtkSMPTools::For(0, n, 65536,
-    [&](vtkIdType begin, vtkIdType end) { std::copy(from + begin, from + end, to + begin); });
-}
-
 inline float FiniteOrInfinity(double value)
 {
   // Non-finite scalars become +infinity: shaders compare it reliably (NaN may not).
@@ -98,13 +91,11 @@ bool vtkTetMeshCompactLayout::Build(vtkTetMesh* mesh)
     return false;
   }
 
+  // The tetrahedra's point ids and neighbour words are the mesh's own arrays, shared, not
+  // copied (32 bytes a tetrahedron).
   this->Arrays.resize(3);
-  auto* tetPoints = static_cast<vtkTypeUInt32Array*>(this->Arrays[TetPointsArray].Array.Get());
-  tetPoints->SetNumberOfTuples(numTets);
-  ParallelCopy(mesh->GetTetPoints(), 4 * numTets, tetPoints->GetPointer(0));
-  auto* neighbors = static_cast<vtkTypeUInt32Array*>(this->Arrays[TetNeighborsArray].Array.Get());
-  neighbors->SetNumberOfTuples(numTets);
-  ParallelCopy(mesh->GetTetNeighbors(), 4 * numTets, neighbors->GetPointer(0));
+  this->Arrays[TetPointsArray].Array = mesh->GetTetPointsArray();
+  this->Arrays[TetNeighborsArray].Array = mesh->GetTetNeighborsArray();
   if (mesh->GetHasCellScalars())
   {
     this->Arrays.push_back(this->CellScalars);

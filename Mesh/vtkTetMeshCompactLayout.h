@@ -21,6 +21,9 @@
  * | 2 "Points"         | RGBA32F  | N      | x y z s, x relative to GetShift()               |
  * | 3 "TetScalars"     | R32F     | T      | the cell value (only with cell scalars)         |
  *
+ * Arrays 0 and 1 are the mesh's own (vtkTetMesh::GetTetPointsArray(), GetTetNeighborsArray()),
+ * shared rather than copied: 32 bytes a tetrahedron the host does not hold twice.
+ *
  * With point scalars, s is the point's value; a NaN or infinite value is stored as +infinity
  * (compares reliably in shaders; NaN may not), and a tetrahedron with such a vertex is
  * transparent. With cell scalars, s is 0 and a fourth, one-component array holds one value per

@@ -42,7 +42,7 @@ void vtkTetMeshSpatialOrder::Sort(vtkTetMeshBuildState& state)
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const uint32_t* tp = mesh->TetPoints.data();
   const std::vector<uint64_t>& keys = state.SortKeys;
-  std::vector<uint32_t>& tetPoints = state.SortTetPoints;
+  vtkTetMeshWords& tetPoints = state.SortTetPoints;
   std::vector<uint32_t>& cellIds = state.SortCellIds;
   tetPoints.resize(mesh->TetPoints.size());
   cellIds.resize(mesh->TetInputCellIds.size());
