@@ -49,7 +49,7 @@
 #include <vector>  // For std::vector
 
 #ifndef __VTK_WRAP__
-#include "vtkSmartPointer.h"     // For vtkSmartPointer
+#include "vtkSmartPointer.h"    // For vtkSmartPointer
 #include "vtkTypeUInt32Array.h" // For vtkTetMeshWords
 
 #include <algorithm> // For std::fill, std::swap
@@ -301,8 +301,14 @@ public:
    * tetrahedron), for a layout to share rather than copy: they hold the mesh's values until
    * the next full build, which may give the mesh other array objects.
    */
-  vtkTypeUInt32Array* GetTetPointsArray() const { return this->TetPoints.GetArray(); }
-  vtkTypeUInt32Array* GetTetNeighborsArray() const { return this->TetNeighbors.GetArray(); }
+  vtkTypeUInt32Array* GetTetPointsArray() const
+  {
+    return this->TetPoints.GetArray();
+  }
+  vtkTypeUInt32Array* GetTetNeighborsArray() const
+  {
+    return this->TetNeighbors.GetArray();
+  }
   const uint32_t* GetBoundaryFaces() const
   {
     return this->BoundaryFaces.data();

@@ -326,7 +326,7 @@ void vtkTetMeshBuilder::RunTopologyStages()
   ReportProgress(this, 0.3);
   {
     ScopedEvent event("vtkTetMeshBuilder: face matching");
-    vtkTetMeshFaceMatching::MatchFaces(state);
+    vtkTetMeshFaceMatching::MatchFaces(state, this->MaximumKeptScratchMemory);
     vtkTetMeshOrientation::OrientDegenerate(state);
     vtkTetMeshFaceMatching::CollectBoundaryFaces(state);
     trimScratch();

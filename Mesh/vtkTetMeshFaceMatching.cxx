@@ -203,28 +203,49 @@ public:
 }
 
 //------------------------------------------------------------------------------
-void vtkTetMeshFaceMatching::MatchFaces(vtkTetMeshBuildState& state)
-{
-  vtkTetMesh* mesh = state.Mesh;
-  mesh->TetNeighbors.assign(4 * static_cast<size_t>(mesh->GetNumberOfTetrahedra()), NoNeighbor);
-  BucketFaces(state);
-  PairFaces(state);
-}
-
-//------------------------------------------------------------------------------
-// The counting sort of the faces by their smallest point id into state.FaceEntries (bucket v
-// from BucketStarts[v]), and the side of each face into state.FaceSides.
-void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state)
+void vtkTetMeshFaceMatching::MatchFaces(vtkTetMeshBuildState& state, vtkIdType scratchLimit)
 {
   vtkTetMesh* mesh = state.Mesh;
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
-  const size_t numPoints = static_cast<size_t>(mesh->GetNumberOfPoints());
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  mesh->TetNeighbors.assign(4 * static_cast<size_t>(numTets), NoNeighbor);
+  state.FaceSides.assign(static_cast<size_t>(numTets), 0);
+  // A face is bucketed by its smallest point id, so the points can be taken in ranges, one
+  // pass each: the face entries (12 bytes a face, 48 a tetrahedron) of a huge mesh then take a
+  // quarter of that at a time, for one more read of the tetrahedra per pass.
+  const vtkIdType entryBytes = 4 * numTets * static_cast<vtkIdType>(sizeof(FaceEntry));
+  const int passes = entryBytes > scratchLimit ? 4 : 1;
+  Pairing result;
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    const uint32_t first = static_cast<uint32_t>(numPoints * pass / passes);
+    const uint32_t last = static_cast<uint32_t>(numPoints * (pass + 1) / passes);
+    BucketFaces(state, first, last, 4 * numTets / passes);
+    PairFaces(state, last - first, result);
+  }
+  vtkTetMeshValidationReport* report = state.GetReport();
+  report->SetNumberOfNonManifoldFaces(result.NonManifold);
+  report->SetNumberOfOverlappingTetrahedra(
+    vtkTetMeshOverlapRule::Apply(result.LeftOut, mesh->TetNeighbors.data(), mesh->TetFlags.data(),
+      static_cast<uint8_t>(vtkTetMesh::Overlapping)));
+}
+
+//------------------------------------------------------------------------------
+// The counting sort of the faces whose smallest point id is in [first, last) by that id into
+// state.FaceEntries (bucket first + v from BucketStarts[v]), and their sides into
+// state.FaceSides. `faces` is about how many there are (for the per-block counters' size).
+void vtkTetMeshFaceMatching::BucketFaces(
+  vtkTetMeshBuildState& state, uint32_t first, uint32_t last, vtkIdType faces)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const size_t numPoints = static_cast<size_t>(last - first);
   const uint32_t* tp = mesh->TetPoints.data();
 
   // Per-block counters cost blocks * numPoints words: keep that below the faces themselves.
   int blocks = vtkTetMeshBuildState::NumberOfBlocks(numTets);
   const size_t maxBlocks =
-    std::max<size_t>(1, 4 * static_cast<size_t>(numTets) / std::max<size_t>(1, numPoints));
+    std::max<size_t>(1, static_cast<size_t>(faces) / std::max<size_t>(1, numPoints));
   blocks = static_cast<int>(std::min<size_t>(static_cast<size_t>(blocks), maxBlocks));
 
   std::vector<uint32_t>& counts = state.FaceCounts;
@@ -236,7 +257,13 @@ void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state)
       for (vtkIdType t = begin; t < end; ++t)
       {
         ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
-          [&](uint32_t, uint32_t lo, uint32_t, uint32_t) { ++count[lo]; });
+          [&](uint32_t, uint32_t lo, uint32_t, uint32_t)
+          {
+            if (lo - first < numPoints) // unsigned: lo in [first, last)
+            {
+              ++count[lo - first];
+            }
+          });
       }
     });
   // Exclusive prefix sums: bucket starts, and each block's write position inside them.
@@ -263,7 +290,6 @@ void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state)
   FaceEntry* entries = state.FaceEntries.data();
   // The side of each face (bit i of a tetrahedron's byte: FaceParity of face i), while its
   // points are in cache: matching then tells overlapping pairs apart without reading them.
-  state.FaceSides.resize(static_cast<size_t>(numTets));
   uint8_t* sides = state.FaceSides.data();
   vtkTetMeshBuildState::ForBlocks(numTets, blocks,
     [&](int b, vtkIdType begin, vtkIdType end)
@@ -275,24 +301,28 @@ void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state)
         ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
           [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
           {
-            FaceEntry& e = entries[offset[lo]++];
+            if (lo - first >= numPoints)
+            {
+              return; // another pass's
+            }
+            FaceEntry& e = entries[offset[lo - first]++];
             e.Mid = mid;
             e.Hi = hi;
             e.Face = face;
             side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
           });
-        sides[t] = side;
+        sides[t] |= side;
       }
     });
 }
 
 //------------------------------------------------------------------------------
-// Each bucket paired on its own, in parallel; the tetrahedra the overlap rule leaves out are
-// gathered and left out at the end.
-void vtkTetMeshFaceMatching::PairFaces(vtkTetMeshBuildState& state)
+// Each of the `buckets` buckets of the last BucketFaces() paired on its own, in parallel; the
+// non-manifold faces counted and the tetrahedra the overlap rule leaves out gathered in
+// `result` (left out once every pass is done).
+void vtkTetMeshFaceMatching::PairFaces(vtkTetMeshBuildState& state, size_t buckets, Pairing& result)
 {
   vtkTetMesh* mesh = state.Mesh;
-  const size_t numPoints = static_cast<size_t>(mesh->GetNumberOfPoints());
   FaceEntry* entries = state.FaceEntries.data();
   const uint64_t* start = state.BucketStarts.data();
   BucketPairing pairing;
@@ -302,9 +332,8 @@ void vtkTetMeshFaceMatching::PairFaces(vtkTetMeshBuildState& state)
   pairing.InputCells = mesh->TetInputCellIds.data();
 
   std::atomic<vtkIdType> nonManifold(0);
-  std::vector<uint32_t> leftOut;
   std::mutex leftOutMutex;
-  vtkSMPTools::For(0, static_cast<vtkIdType>(numPoints), 2048,
+  vtkSMPTools::For(0, static_cast<vtkIdType>(buckets), 2048,
     [&](vtkIdType vb, vtkIdType ve)
     {
       BucketPairing local = pairing;
@@ -325,14 +354,10 @@ void vtkTetMeshFaceMatching::PairFaces(vtkTetMeshBuildState& state)
       if (!localLeftOut.empty())
       {
         std::lock_guard<std::mutex> lock(leftOutMutex);
-        leftOut.insert(leftOut.end(), localLeftOut.begin(), localLeftOut.end());
+        result.LeftOut.insert(result.LeftOut.end(), localLeftOut.begin(), localLeftOut.end());
       }
     });
-  vtkTetMeshValidationReport* report = state.GetReport();
-  report->SetNumberOfNonManifoldFaces(nonManifold);
-  report->SetNumberOfOverlappingTetrahedra(
-    vtkTetMeshOverlapRule::Apply(leftOut, mesh->TetNeighbors.data(), mesh->TetFlags.data(),
-      static_cast<uint8_t>(vtkTetMesh::Overlapping)));
+  result.NonManifold += nonManifold;
 }
 
 //------------------------------------------------------------------------------

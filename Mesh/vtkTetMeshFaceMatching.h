@@ -26,6 +26,7 @@
 #include "vtkTetMesh.h" // For vtkTetMesh::FacePoints in FaceParity
 
 #include <cstdint> // For uint32_t
+#include <vector>  // For std::vector
 
 class vtkTetMeshBuildState;
 
@@ -34,8 +35,10 @@ class vtkTetMeshFaceMatching
 public:
   /**
    * The mesh's TetNeighbors (needs TetPoints and TetFlags: degenerate tetrahedra have no side).
+   * Face entries of more than `scratchLimit` bytes (48 a tetrahedron) are made and matched in
+   * four passes over ranges of point ids, a quarter of them at a time.
    */
-  static void MatchFaces(vtkTetMeshBuildState& state);
+  static void MatchFaces(vtkTetMeshBuildState& state, vtkIdType scratchLimit);
 
   /**
    * The mesh's BoundaryFaces: faces without a neighbour, but those of tetrahedra left out.
@@ -65,8 +68,15 @@ public:
   }
 
 private:
-  static void BucketFaces(vtkTetMeshBuildState& state);
-  static void PairFaces(vtkTetMeshBuildState& state);
+  // What the passes of PairFaces found.
+  struct Pairing
+  {
+    vtkIdType NonManifold = 0;
+    std::vector<uint32_t> LeftOut;
+  };
+  static void BucketFaces(
+    vtkTetMeshBuildState& state, uint32_t first, uint32_t last, vtkIdType faces);
+  static void PairFaces(vtkTetMeshBuildState& state, size_t buckets, Pairing& result);
 };
 
 #endif
