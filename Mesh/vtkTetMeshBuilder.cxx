@@ -326,7 +326,9 @@ void vtkTetMeshBuilder::RunTopologyStages()
   ReportProgress(this, 0.3);
   {
     ScopedEvent event("vtkTetMeshBuilder: face matching");
-    vtkTetMeshFaceMatching::MatchFaces(state, this->MaximumKeptScratchMemory);
+    // A huge mesh's passes report their progress between 0.3 and 0.8.
+    vtkTetMeshFaceMatching::MatchFaces(state, this->MaximumKeptScratchMemory,
+      [this](double done) { ReportProgress(this, 0.3 + 0.5 * done); });
     vtkTetMeshOrientation::OrientDegenerate(state);
     vtkTetMeshFaceMatching::CollectBoundaryFaces(state);
     trimScratch();

@@ -203,7 +203,8 @@ public:
 }
 
 //------------------------------------------------------------------------------
-void vtkTetMeshFaceMatching::MatchFaces(vtkTetMeshBuildState& state, vtkIdType scratchLimit)
+void vtkTetMeshFaceMatching::MatchFaces(
+  vtkTetMeshBuildState& state, vtkIdType scratchLimit, const std::function<void(double)>& progress)
 {
   vtkTetMesh* mesh = state.Mesh;
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
@@ -222,6 +223,10 @@ void vtkTetMeshFaceMatching::MatchFaces(vtkTetMeshBuildState& state, vtkIdType s
     const uint32_t last = static_cast<uint32_t>(numPoints * (pass + 1) / passes);
     BucketFaces(state, first, last, 4 * numTets / passes);
     PairFaces(state, last - first, result);
+    if (pass + 1 < passes)
+    {
+      progress(static_cast<double>(pass + 1) / passes);
+    }
   }
   vtkTetMeshValidationReport* report = state.GetReport();
   report->SetNumberOfNonManifoldFaces(result.NonManifold);

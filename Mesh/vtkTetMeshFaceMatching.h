@@ -25,8 +25,9 @@
 
 #include "vtkTetMesh.h" // For vtkTetMesh::FacePoints in FaceParity
 
-#include <cstdint> // For uint32_t
-#include <vector>  // For std::vector
+#include <cstdint>    // For uint32_t
+#include <functional> // For std::function
+#include <vector>     // For std::vector
 
 class vtkTetMeshBuildState;
 
@@ -36,9 +37,11 @@ public:
   /**
    * The mesh's TetNeighbors (needs TetPoints and TetFlags: degenerate tetrahedra have no side).
    * Face entries of more than `scratchLimit` bytes (48 a tetrahedron) are made and matched in
-   * four passes over ranges of point ids, a quarter of them at a time.
+   * four passes over ranges of point ids, a quarter of them at a time; `progress` is called
+   * with the fraction done after each pass but the last.
    */
-  static void MatchFaces(vtkTetMeshBuildState& state, vtkIdType scratchLimit);
+  static void MatchFaces(vtkTetMeshBuildState& state, vtkIdType scratchLimit,
+    const std::function<void(double)>& progress);
 
   /**
    * The mesh's BoundaryFaces: faces without a neighbour, but those of tetrahedra left out.
