@@ -136,6 +136,10 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   {
     this->Input.ReportBlocks(report);
   }
+  // A mesh whose every tetrahedron has zero volume holds nothing to integrate: refused, as the
+  // reference refuses it (drawn, its flat faces left a few pixels of noise).
+  const bool allFlat = report && report->GetNumberOfTetrahedra() > 0 &&
+    report->GetNumberOfDegenerateTetrahedra() == report->GetNumberOfTetrahedra();
   if (report && report->GetMTime() > this->ReportedTime)
   {
     self->GetValidationReport()->DeepCopy(report);
@@ -143,7 +147,7 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
     const bool problems = self->GetWarnAboutDegenerateCells()
       ? report->HasProblems()
       : report->HasProblemsBesidesDegeneracy();
-    if (report->GetUsable() && problems)
+    if (report->GetUsable() && problems && !allFlat)
     {
       vtkWarningWithObjectMacro(self, << "Input mesh: " << report->GetSummary());
     }
@@ -152,6 +156,14 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   {
     error = std::string("Cannot render the input: ") +
       (report ? report->GetErrorMessage() : "no mesh") + ". Nothing is drawn.";
+    return false;
+  }
+  if (allFlat)
+  {
+    error = "Cannot render the input: every one of its " +
+      std::to_string(report->GetNumberOfTetrahedra()) +
+      " tetrahedra has zero volume (degenerate), so there is nothing to integrate. Nothing is "
+      "drawn.";
     return false;
   }
 

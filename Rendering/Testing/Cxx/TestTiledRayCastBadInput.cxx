@@ -147,6 +147,20 @@ bool RefusedInputs(vtkUnstructuredGrid* spx)
 {
   vtkNew<vtkUnstructuredGrid> empty;
   bool ok = Refused("empty grid", empty, "Cannot render");
+  // Every tetrahedron of zero volume (spx flattened onto z = 0): nothing to draw, as the
+  // reference says too (151 pixels were drawn).
+  vtkNew<vtkUnstructuredGrid> flat;
+  flat->DeepCopy(spx);
+  vtkNew<vtkPoints> flatPoints;
+  flatPoints->DeepCopy(spx->GetPoints());
+  for (vtkIdType p = 0; p < flatPoints->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    flatPoints->GetPoint(p, x);
+    flatPoints->SetPoint(p, x[0], x[1], 0.0);
+  }
+  flat->SetPoints(flatPoints);
+  ok = Refused("every tetrahedron flat", flat, "zero volume") && ok;
   ok = Refused("no scalars", OneTet(false), "scalar") && ok;
   ok = Refused("triangles only", Triangles(), "3D") && ok;
   using Setting = std::function<void(vtkTiledRayCastVolumeMapper*)>;
