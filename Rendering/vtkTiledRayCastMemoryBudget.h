@@ -39,29 +39,37 @@ class vtkTiledRayCastMemoryBudget
 public:
   /**
    * The budget of this frame: `userLimit` bytes (0: none), the free memory `window`'s driver
-   * reports, `heldBytes` of which the mesh on the GPU holds now.
+   * reports, `heldBytes` of which the mesh on the GPU holds now. The driver is asked only when
+   * a check needs it (a check runs only when the input changed).
    */
   void Update(vtkOpenGLRenderWindow* window, vtkIdType userLimit, vtkIdType heldBytes);
 
   /// The bytes the mesh may take, or -1 without a limit.
-  vtkIdType GetBytes() const { return this->Bytes; }
+  vtkIdType GetBytes();
+
+  /// The user's limit given to Update().
+  vtkIdType GetUserLimit() const { return this->UserLimit; }
 
   /**
    * Before the build: false, with `error` set, when the layout of `input` (the paper layout or
    * the compact one) cannot fit, from a lower bound on its tetrahedra and its points. True where
    * the input's counts bound nothing (mixed or nonlinear cells, other data sets).
    */
-  bool CheckInput(vtkDataSet* input, bool paperLayout, std::string& error) const;
+  bool CheckInput(vtkDataSet* input, bool paperLayout, std::string& error);
 
   /**
    * After the layout is packed: false, with `error` set, when its arrays (and the visible set
    * and entry faces, `visibleMeshBytes`) do not fit.
    */
-  bool CheckLayout(vtkTetMeshLayout* layout, vtkIdType visibleMeshBytes, std::string& error) const;
+  bool CheckLayout(vtkTetMeshLayout* layout, vtkIdType visibleMeshBytes, std::string& error);
 
 private:
   std::string Refusal(vtkIdType needed, const std::string& mesh, const std::string& atLeast) const;
 
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkIdType UserLimit = 0;
+  vtkIdType HeldBytes = 0;
+  bool Known = false; // Bytes and Source worked out since Update()
   vtkIdType Bytes = -1;
   std::string Source; // what the budget is: "MaximumGPUMemory" or the driver's free memory
 };

@@ -102,7 +102,7 @@ vtkTetMeshLayout* vtkTiledRayCastMeshBuild::GetLayout()
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProperty* property,
-  int maxTextureSize, int maxTextureBufferSize, const vtkTiledRayCastMemoryBudget& budget,
+  int maxTextureSize, int maxTextureBufferSize, vtkTiledRayCastMemoryBudget& budget,
   std::string& error)
 {
   vtkTiledRayCastVolumeMapper* self = this->Mapper;
@@ -118,10 +118,14 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
     return false;
   }
 
-  // What cannot fit on the GPU is refused before it is built, where the input's counts tell.
+  // What cannot fit on the GPU is refused before it is built, where the input's counts tell;
+  // an input found to fit is not checked again until it (or the user's limit) changes.
   const bool paper = self->GetMeshLayout() == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
+  const bool checkBudget = input != this->BudgetInput ||
+    input->GetMTime() != this->BudgetInputTime || budget.GetUserLimit() != this->BudgetUserLimit;
+  this->BudgetInput = nullptr;
   std::string budgetError;
-  if (!budget.CheckInput(input, paper, budgetError))
+  if (checkBudget && !budget.CheckInput(input, paper, budgetError))
   {
     error = "Cannot draw the input: " + budgetError + ". Nothing is drawn.";
     return false;
@@ -207,11 +211,15 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   // The visible set (a bit per tetrahedron) and the entry faces (a word each) come with it.
   const vtkIdType visibleBytes =
     (mesh->GetNumberOfTetrahedra() + 7) / 8 + 4 * mesh->GetNumberOfBoundaryFaces();
-  if (!budget.CheckLayout(layout, visibleBytes, budgetError))
+  if ((checkBudget || layout->GetLastUpdate() != vtkTetMeshLayout::UpdatedNothing) &&
+    !budget.CheckLayout(layout, visibleBytes, budgetError))
   {
     error = "Cannot draw the input: " + budgetError + ". Nothing is drawn.";
     return false;
   }
+  this->BudgetInput = input;
+  this->BudgetInputTime = input->GetMTime();
+  this->BudgetUserLimit = budget.GetUserLimit();
   timer->StopTimer();
   self->GetStatistics()->SetMeshBuildTime(timer->GetElapsedTime());
   if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)

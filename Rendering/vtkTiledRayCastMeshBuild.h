@@ -56,7 +56,7 @@ public:
    * layout). False, with `error` set, when nothing can be drawn.
    */
   bool Update(vtkDataObject* input, vtkVolumeProperty* property, int maxTextureSize,
-    int maxTextureBufferSize, const vtkTiledRayCastMemoryBudget& budget, std::string& error);
+    int maxTextureBufferSize, vtkTiledRayCastMemoryBudget& budget, std::string& error);
 
   /**
    * Whether the layout object was replaced since the last call (its arrays must all be
@@ -95,6 +95,11 @@ private:
   int LayoutTextureLimit = 0;
   vtkMTimeType MeshTime = 0;
   vtkMTimeType ReportedTime = 0;
+  // The input and user limit last found within the GPU memory budget: checked again only when
+  // one changes (the check reads every cell type).
+  const void* BudgetInput = nullptr;
+  vtkMTimeType BudgetInputTime = 0;
+  vtkIdType BudgetUserLimit = -1;
   bool NewLayout = false;
 };
 
