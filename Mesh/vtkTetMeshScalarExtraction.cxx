@@ -9,6 +9,7 @@
 
 =========================================================================*/
 #include "vtkTetMeshScalarExtraction.h"
+#include "vtkTetMeshSpatialOrder.h"
 
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -64,6 +65,10 @@ bool vtkTetMeshScalarExtraction::ReadScalars(vtkTetMeshBuildState& state, vtkDat
   std::vector<double>& values = cellFlag == 0 ? mesh->PointScalars : state.InputCellScalars;
   values.resize(static_cast<size_t>(expected));
   vtkTetScalarSelection::Extract(array, magnitude, component, values.data());
+  if (cellFlag == 0)
+  {
+    vtkTetMeshSpatialOrder::ApplyPointOrder(mesh, values, 1); // the mesh's point order
+  }
   StoreValues(state, cellFlag);
   state.ScalarsStamp = vtkTetMeshBuildState::MakeStamp(array);
   state.ScalarsCellFlag = cellFlag;

@@ -37,7 +37,7 @@ inline uint64_t SpreadBits3(uint64_t v)
 void vtkTetMeshSpatialOrder::Sort(vtkTetMeshBuildState& state)
 {
   ComputeKeys(state);
-  SortKeys(state);
+  SortKeys(state, 30);
   vtkTetMesh* mesh = state.Mesh;
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const uint32_t* tp = mesh->TetPoints.data();
@@ -97,14 +97,79 @@ void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
 }
 
 //------------------------------------------------------------------------------
-// Three stable counting passes of 11 bits over the code (least significant first): linear,
-// and ties stay in input order.
-void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state)
+void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  if (numPoints >= (vtkIdType(1) << 31))
+  {
+    return;
+  }
+  // One key per point: 33 bits of Morton code of its position above its 31-bit id.
+  const double* p = mesh->Points.data();
+  double origin[3], scale[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    origin[c] = mesh->Bounds[2 * c];
+    const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
+    scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
+  }
+  std::vector<uint64_t>& keys = state.SortKeys;
+  keys.resize(static_cast<size_t>(numPoints));
+  vtkSMPTools::For(0, numPoints, 65536,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        uint64_t code = 0;
+        for (int c = 0; c < 3; ++c)
+        {
+          const double q = std::min(2047.0, std::max(0.0, (p[3 * i + c] - origin[c]) * scale[c]));
+          code |= SpreadBits3(static_cast<uint64_t>(q)) << c;
+        }
+        keys[i] = (code << 31) | static_cast<uint64_t>(i);
+      }
+    });
+  SortKeys(state, 31);
+
+  // The input id of each new point, the new id of each input point, then the points and the
+  // tetrahedra's ids in the new numbering.
+  mesh->PointInputIds.resize(static_cast<size_t>(numPoints));
+  std::vector<uint32_t>& newIds = state.SortCellIds; // scratch of the right type
+  newIds.resize(static_cast<size_t>(numPoints));
+  uint32_t* inputIds = mesh->PointInputIds.data();
+  vtkSMPTools::For(0, numPoints, 65536,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const uint32_t old = static_cast<uint32_t>(keys[i] & ((uint64_t(1) << 31) - 1));
+        inputIds[i] = old;
+        newIds[old] = static_cast<uint32_t>(i);
+      }
+    });
+  // The input's coordinates in its own order, put in the new one.
+  ApplyPointOrder(mesh, mesh->Points, 3);
+  uint32_t* tp = mesh->TetPoints.data();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(mesh->TetPoints.size()), 65536,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        tp[k] = newIds[tp[k]];
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+// Three stable counting passes of 11 bits over the code above the `idBits` bits of the id
+// (least significant first): linear, and ties stay in input order.
+void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state, int idBits)
 {
   std::vector<uint64_t>& keys = state.SortKeys;
   std::vector<uint64_t>& scratch = state.SortScratch;
   scratch.resize(keys.size());
-  for (int shift = 30; shift < 63; shift += 11)
+  for (int shift = idBits; shift < idBits + 33; shift += 11)
   {
     size_t position[2048] = { 0 };
     for (uint64_t key : keys)

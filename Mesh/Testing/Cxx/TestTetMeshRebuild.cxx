@@ -17,6 +17,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkFloatArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -141,6 +142,7 @@ std::string CompareWithFullBuild(vtkUnstructuredGrid* grid, Pipeline& incrementa
   copy->DeepCopy(grid);
   Pipeline fresh;
   fresh.Builder->SetSpatialOrdering(incremental.Builder->GetSpatialOrdering());
+  fresh.Builder->SetPointOrdering(incremental.Builder->GetPointOrdering());
   fresh.Build(copy);
   std::string error = CompareMeshes(incremental.Builder->GetMesh(), fresh.Builder->GetMesh());
   if (error.empty())
@@ -419,6 +421,88 @@ int TorusTranslation(int argc, char* argv[])
   return EXIT_SUCCESS;
 }
 
+// PointOrdering: the points renumbered along a Morton curve. The mesh's points and point scalars
+// are the input's through GetPointInputIds() (a permutation) and every tetrahedron keeps its
+// input cell's points, after a full build and after points-only and scalars-only rebuilds
+// (which keep the last full build's order, as for the tetrahedra).
+std::string CheckPointOrder(vtkTetMesh* mesh, vtkUnstructuredGrid* grid)
+{
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  const uint32_t* inputIds = mesh->GetPointInputIds();
+  if (!inputIds)
+  {
+    return "no point order";
+  }
+  std::vector<char> seen(static_cast<size_t>(numPoints), 0);
+  vtkIdType moved = 0;
+  vtkDataArray* scalars = grid->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    if (inputIds[i] >= numPoints || seen[inputIds[i]])
+    {
+      return "not a permutation";
+    }
+    seen[inputIds[i]] = 1;
+    moved += inputIds[i] != i ? 1 : 0;
+    double x[3];
+    grid->GetPoint(inputIds[i], x);
+    const double* p = mesh->GetPoints() + 3 * i;
+    if (p[0] != x[0] || p[1] != x[1] || p[2] != x[2] ||
+      mesh->GetPointScalars()[i] != scalars->GetTuple1(inputIds[i]))
+    {
+      return "point " + std::to_string(i) + " is not its input point";
+    }
+  }
+  if (moved < numPoints / 2)
+  {
+    return "the points kept their order";
+  }
+  vtkNew<vtkIdList> cellIds;
+  for (vtkIdType t = 0; t < mesh->GetNumberOfTetrahedra(); ++t)
+  {
+    grid->GetCellPoints(mesh->GetTetInputCellIds()[t], cellIds);
+    for (int k = 0; k < 4; ++k)
+    {
+      if (cellIds->IsId(inputIds[mesh->GetTetPoints()[4 * t + k]]) < 0)
+      {
+        return "tetrahedron " + std::to_string(t) + " has a point not of its input cell";
+      }
+    }
+  }
+  return trc::CheckNeighbors(mesh);
+}
+
+int PointOrder(vtkUnstructuredGrid* input)
+{
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->DeepCopy(input);
+  Pipeline p;
+  p.Builder->SpatialOrderingOn();
+  p.Builder->PointOrderingOn();
+  vtkTetMesh* mesh = p.Build(grid);
+  TRC_CHECK_EMPTY(CheckPointOrder(mesh, grid));
+  TRC_CHECK_EMPTY(CompareWithFullBuild(grid, p));
+  Deform(grid, 0.01);
+  p.Build(grid);
+  TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildPoints);
+  TRC_CHECK_EMPTY(CheckPointOrder(mesh, grid));
+  vtkDataArray* scalars = grid->GetPointData()->GetScalars();
+  for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i)
+  {
+    scalars->SetTuple1(i, scalars->GetTuple1(i) + 0.5 * i);
+  }
+  scalars->Modified();
+  p.Build(grid);
+  TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildScalars);
+  TRC_CHECK_EMPTY(CheckPointOrder(mesh, grid));
+  // Off again: a full build, in the input's numbering.
+  p.Builder->PointOrderingOff();
+  mesh = p.Build(grid);
+  TRC_CHECK(p.Builder->GetLastRebuild() == vtkTetMeshBuilder::RebuildAll);
+  TRC_CHECK(mesh->GetPointInputIds() == nullptr);
+  return EXIT_SUCCESS;
+}
+
 } // namespace
 
 int TestTetMeshRebuild(int argc, char* argv[])
@@ -436,6 +520,7 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(PointsAndScalars(p, grid) == EXIT_SUCCESS);
   TRC_CHECK(Everything(p, grid) == EXIT_SUCCESS);
   TRC_CHECK(TorusTranslation(argc, argv) == EXIT_SUCCESS);
+  TRC_CHECK(PointOrder(grid) == EXIT_SUCCESS);
 
   TRC_CHECK(std::string(vtkTetMeshBuilder::GetRebuildAsString(vtkTetMeshBuilder::RebuildPoints |
               vtkTetMeshBuilder::RebuildScalars)) == "points and scalars");
