@@ -59,6 +59,7 @@
 #include "BenchmarkMapperSettings.h"
 #include "BenchmarkMeshOrder.h"
 #include "GeneratedMeshes.h"
+#include "ProcessMemory.h"
 #include "TiledRayCastSharedScenes.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
@@ -93,6 +94,8 @@
 
 namespace
 {
+using trcbench::ProcessMemory;
+using trcbench::ResetPeakMemory;
 using trcmappers::Options;
 using trcmappers::Setting;
 
@@ -145,32 +148,6 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
      << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << ","
      << Cell(r.MeshBuildMs) << "," << Cell(r.HostPeakBytesPerTet) << "\n";
-}
-
-// A field of /proc/self/status in bytes (VmRSS, VmHWM), or NaN where there is none.
-double ProcessMemory(const char* field)
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const size_t length = std::strlen(field);
-  while (std::getline(status, line))
-  {
-    if (line.compare(0, length, field) == 0 && line.size() > length && line[length] == ':')
-    {
-      return 1024.0 * std::atof(line.c_str() + length + 1); // "VmHWM:  123456 kB"
-    }
-  }
-  return NAN;
-}
-
-// Resets the process's peak resident memory (VmHWM) to its current size; false where the kernel
-// cannot (then the peak is the process's whole peak).
-bool ResetPeakMemory()
-{
-  std::ofstream clear("/proc/self/clear_refs");
-  clear << "5";
-  clear.flush();
-  return clear.good();
 }
 
 // The median of the timed frames' values; NaN (an empty cell) for none.

@@ -24,6 +24,7 @@
 // The larger rungs take what their size takes (gym6_300m: 30 GB of host memory); the test of
 // the build runs the 1M ones.
 #include "GeneratedMeshes.h"
+#include "ProcessMemory.h"
 #include "TiledRayCastTestScene.h"
 
 #include "vtkTetMesh.h"
@@ -32,14 +33,13 @@
 #include "vtkTetMeshValidationReport.h"
 #include "vtkTimerLog.h"
 
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
 namespace
 {
+using trcbench::ProcessMemory;
 using trctest::Expect;
 
 // The builder's findings on `grid` against what the rung must be.
@@ -64,21 +64,29 @@ bool CheckMesh(const generated::Rung& rung, vtkUnstructuredGrid* grid)
   return Expect(report->GetNumberOfBoundaryFaces() == boundary, name + ": boundary faces") && ok;
 }
 
-// A field of /proc/self/status in bytes (VmRSS, VmHWM).
-double ProcessMemory(const char* field)
+// Our default mapper showing `grid` alone at `size` x `size` pixels, the camera on its views.
+struct Scene
 {
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  const size_t length = std::strlen(field);
-  while (std::getline(status, line))
+  vtkNew<vtkTiledRayCastVolumeMapper> Mapper;
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene(vtkUnstructuredGrid* grid, int size)
   {
-    if (line.compare(0, length, field) == 0 && line.size() > length && line[length] == ':')
-    {
-      return 1024.0 * std::atof(line.c_str() + length + 1);
-    }
+    this->Mapper->SetInputData(grid);
+    this->Volume->SetMapper(this->Mapper);
+    this->Volume->SetProperty(trctest::MakePropertyFor(grid, 0.05));
+    this->Renderer->AddVolume(this->Volume);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(size, size);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->ResetCamera();
+    trctest::LookFrom(this->Renderer->GetActiveCamera(), 30, 20);
+    this->Renderer->ResetCamera();
   }
-  return 0.0;
-}
+};
 
 // Where the host memory goes: the builder, the layout, the mapper's first frame.
 void ReportMemory(const generated::Rung& rung, vtkUnstructuredGrid* grid)
@@ -88,7 +96,7 @@ void ReportMemory(const generated::Rung& rung, vtkUnstructuredGrid* grid)
   auto start = [&]()
   {
     base = ProcessMemory("VmRSS");
-    std::ofstream("/proc/self/clear_refs") << "5";
+    trcbench::ResetPeakMemory();
   };
   auto say = [&](const char* what, double extra)
   {
@@ -100,6 +108,7 @@ void ReportMemory(const generated::Rung& rung, vtkUnstructuredGrid* grid)
   {
     vtkNew<vtkTetMeshBuilder> builder;
     builder->SetSpatialOrdering(true); // as the mapper does
+    builder->SetPointOrdering(true);
     vtkTetMesh* mesh = builder->Build(grid);
     say("mesh builder", 0.0);
     std::cout << rung.Name << " memory: builder scratch " << builder->GetScratchMemorySize() / tets
@@ -111,42 +120,19 @@ void ReportMemory(const generated::Rung& rung, vtkUnstructuredGrid* grid)
               << " B/tet\n";
   }
   start();
-  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-  mapper->SetInputData(grid);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(trctest::MakePropertyFor(grid, 0.05));
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(1024, 1024);
-  window->AddRenderer(renderer);
-  window->Render();
+  Scene scene(grid, 1024);
+  scene.Window->Render();
   say("mapper's first frame", 0.0);
-  std::cout << rung.Name << ": " << mapper->GetStatistics()->GetSummary() << "\n";
+  std::cout << rung.Name << ": " << scene.Mapper->GetStatistics()->GetSummary() << "\n";
 }
 
 // Our default mapper's image of `grid` against the exact reference.
 bool CheckImage(const generated::Rung& rung, vtkUnstructuredGrid* grid)
 {
-  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-  mapper->SetInputData(grid);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(trctest::MakePropertyFor(grid, 0.05));
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddVolume(volume);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(160, 160);
-  window->AddRenderer(renderer);
-  renderer->ResetCamera();
-  trctest::LookFrom(renderer->GetActiveCamera(), 30, 20);
-  renderer->ResetCamera();
-  window->Render();
-  return trctest::CheckAgainstReference(window, renderer, volume, trctest::Bounds(), rung.Name);
+  Scene scene(grid, 160);
+  scene.Window->Render();
+  return trctest::CheckAgainstReference(
+    scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), rung.Name);
 }
 }
 

@@ -31,6 +31,35 @@ inline uint64_t SpreadBits3(uint64_t v)
   v = (v | (v << 2)) & 0x249249249249ull;
   return v;
 }
+
+// The 33-bit Morton code of positions in the mesh's bounds, 11 bits per axis.
+class MortonGrid
+{
+public:
+  explicit MortonGrid(const double bounds[6])
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      this->Origin[c] = bounds[2 * c];
+      const double extent = bounds[2 * c + 1] - bounds[2 * c];
+      this->Scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
+    }
+  }
+  uint64_t Code(const double x[3]) const
+  {
+    uint64_t code = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      const double q = std::min(2047.0, std::max(0.0, (x[c] - this->Origin[c]) * this->Scale[c]));
+      code |= SpreadBits3(static_cast<uint64_t>(q)) << c;
+    }
+    return code;
+  }
+
+private:
+  double Origin[3];
+  double Scale[3];
+};
 }
 
 //------------------------------------------------------------------------------
@@ -68,13 +97,7 @@ void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const double* p = mesh->Points.data();
   const uint32_t* tp = mesh->TetPoints.data();
-  double origin[3], scale[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    origin[c] = mesh->Bounds[2 * c];
-    const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
-    scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
-  }
+  const MortonGrid grid(mesh->Bounds);
   std::vector<uint64_t>& keys = state.SortKeys;
   keys.resize(static_cast<size_t>(numTets));
   vtkSMPTools::For(0, numTets, 16384,
@@ -82,16 +105,14 @@ void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
     {
       for (vtkIdType t = begin; t < end; ++t)
       {
-        uint64_t code = 0;
+        double centroid[3];
         for (int c = 0; c < 3; ++c)
         {
-          const double centroid = 0.25 *
+          centroid[c] = 0.25 *
             (p[3 * tp[4 * t] + c] + p[3 * tp[4 * t + 1] + c] + p[3 * tp[4 * t + 2] + c] +
               p[3 * tp[4 * t + 3] + c]);
-          const double q = std::min(2047.0, std::max(0.0, (centroid - origin[c]) * scale[c]));
-          code |= SpreadBits3(static_cast<uint64_t>(q)) << c;
         }
-        keys[t] = (code << 30) | static_cast<uint64_t>(t);
+        keys[t] = (grid.Code(centroid) << 30) | static_cast<uint64_t>(t);
       }
     });
 }
@@ -107,13 +128,7 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
   }
   // One key per point: 33 bits of Morton code of its position above its 31-bit id.
   const double* p = mesh->Points.data();
-  double origin[3], scale[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    origin[c] = mesh->Bounds[2 * c];
-    const double extent = mesh->Bounds[2 * c + 1] - mesh->Bounds[2 * c];
-    scale[c] = extent > 0.0 ? 2047.0 / extent : 0.0;
-  }
+  const MortonGrid grid(mesh->Bounds);
   std::vector<uint64_t>& keys = state.SortKeys;
   keys.resize(static_cast<size_t>(numPoints));
   vtkSMPTools::For(0, numPoints, 65536,
@@ -121,13 +136,7 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        uint64_t code = 0;
-        for (int c = 0; c < 3; ++c)
-        {
-          const double q = std::min(2047.0, std::max(0.0, (p[3 * i + c] - origin[c]) * scale[c]));
-          code |= SpreadBits3(static_cast<uint64_t>(q)) << c;
-        }
-        keys[i] = (code << 31) | static_cast<uint64_t>(i);
+        keys[i] = (grid.Code(p + 3 * i) << 31) | static_cast<uint64_t>(i);
       }
     });
   SortKeys(state, 31);
