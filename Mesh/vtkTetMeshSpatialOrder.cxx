@@ -178,24 +178,45 @@ void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state, int idBits)
   std::vector<uint64_t>& keys = state.SortKeys;
   std::vector<uint64_t>& scratch = state.SortScratch;
   scratch.resize(keys.size());
+  // Each pass in parallel: every block of keys counts its digits, the counts' prefix sums in
+  // (digit, block) order give each block where its keys of each digit go, and the blocks
+  // scatter at once. Stable, and the same result as one thread's (a billion keys sorted on
+  // one thread took most of a build).
+  const vtkIdType n = static_cast<vtkIdType>(keys.size());
+  const int blocks = vtkTetMeshBuildState::NumberOfBlocks(n);
+  std::vector<size_t> position(static_cast<size_t>(blocks) * 2048);
   for (int shift = idBits; shift < idBits + 33; shift += 11)
   {
-    size_t position[2048] = { 0 };
-    for (uint64_t key : keys)
-    {
-      ++position[(key >> shift) & 2047];
-    }
+    std::fill(position.begin(), position.end(), 0);
+    vtkTetMeshBuildState::ForBlocks(n, blocks,
+      [&](int b, vtkIdType begin, vtkIdType end)
+      {
+        size_t* count = position.data() + static_cast<size_t>(b) * 2048;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          ++count[(keys[i] >> shift) & 2047];
+        }
+      });
     size_t running = 0;
-    for (size_t& slot : position)
+    for (size_t digit = 0; digit < 2048; ++digit)
     {
-      const size_t n = slot;
-      slot = running;
-      running += n;
+      for (int b = 0; b < blocks; ++b)
+      {
+        size_t& slot = position[static_cast<size_t>(b) * 2048 + digit];
+        const size_t count = slot;
+        slot = running;
+        running += count;
+      }
     }
-    for (uint64_t key : keys)
-    {
-      scratch[position[(key >> shift) & 2047]++] = key;
-    }
+    vtkTetMeshBuildState::ForBlocks(n, blocks,
+      [&](int b, vtkIdType begin, vtkIdType end)
+      {
+        size_t* next = position.data() + static_cast<size_t>(b) * 2048;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          scratch[next[(keys[i] >> shift) & 2047]++] = keys[i];
+        }
+      });
     keys.swap(scratch);
   }
 }
