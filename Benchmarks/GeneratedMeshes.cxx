@@ -70,12 +70,12 @@ const int VoxelTets[6][4] = {
 
 struct Layout
 {
-  std::string Family;
+  bool AllKept; // wavelet6: every voxel (the family compared once, not per voxel)
   int N = 0;
   std::vector<char> Inside; // per voxel index along an axis: inside a slab (gym6)
 
   Layout(const std::string& family, int n)
-    : Family(family)
+    : AllKept(family == "wavelet6")
     , N(n)
     , Inside(n)
   {
@@ -87,7 +87,7 @@ struct Layout
 
   bool Kept(int i, int j, int k) const
   {
-    if (this->Family == "wavelet6")
+    if (this->AllKept)
     {
       return true;
     }

@@ -181,12 +181,7 @@ bool vtkTetMeshBuilder::UpdatePoints(vtkDataSet* input)
   vtkTetMesh* mesh = state.Mesh;
   std::string error;
   ScopedEvent event("vtkTetMeshBuilder: points only");
-  const bool read = vtkTetMeshCellExtraction::ReadPoints(state, input, error);
-  if (read)
-  {
-    vtkTetMeshSpatialOrder::ApplyPointOrder(mesh, mesh->Points, 3); // the last full build's
-  }
-  if (!read)
+  if (!vtkTetMeshCellExtraction::ReadPoints(state, input, error))
   {
     state.TopologyError = error;
     // Initialize() empties the report too, yet the counters of the last full build stand (as
@@ -199,6 +194,7 @@ bool vtkTetMeshBuilder::UpdatePoints(vtkDataSet* input)
     vtkErrorMacro(<< "Cannot build a tetrahedral mesh: " << error << ".");
     return true;
   }
+  vtkTetMeshSpatialOrder::ApplyPointOrder(mesh, mesh->Points, 3); // the last full build's order
   if (!state.TopologyError.empty() ||
     !vtkTetMeshOrientation::Classify(state, this->DegeneracyTolerance, false))
   {

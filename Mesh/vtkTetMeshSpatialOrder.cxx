@@ -180,8 +180,8 @@ void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state, int idBits)
   scratch.resize(keys.size());
   // Each pass in parallel: every block of keys counts its digits, the counts' prefix sums in
   // (digit, block) order give each block where its keys of each digit go, and the blocks
-  // scatter at once. Stable, and the same result as one thread's (a billion keys sorted on
-  // one thread took most of a build).
+  // scatter at once. Stable, and the same result as one thread's (one thread sorting a billion
+  // keys is a long serial step of a huge build).
   const vtkIdType n = static_cast<vtkIdType>(keys.size());
   const int blocks = vtkTetMeshBuildState::NumberOfBlocks(n);
   std::vector<size_t> position(static_cast<size_t>(blocks) * 2048);

@@ -32,8 +32,8 @@
 #include "vtkTiledRayCastGradientOpacityNodes.h" // For vtkTiledRayCastGradientOpacityNodes
 #include "vtkTiledRayCastIntegration.h"          // For vtkTiledRayCastIntegration
 #include "vtkTiledRayCastLighting.h"             // For vtkTiledRayCastLighting
+#include "vtkTiledRayCastMemoryBudget.h"         // For vtkTiledRayCastMemoryBudget
 #include "vtkTiledRayCastMeshBuild.h"            // For vtkTiledRayCastMeshBuild
-#include "vtkTiledRayCastMemoryBudget.h"
 #include "vtkTiledRayCastMeshTextures.h"         // For vtkTiledRayCastMeshTextures
 #include "vtkTiledRayCastOpaqueDepth.h"          // For vtkTiledRayCastOpaqueDepth
 #include "vtkTiledRayCastPhaseTimers.h"          // For vtkTiledRayCastPhaseTimers

@@ -17,8 +17,8 @@
 #include "vtkUnstructuredGrid.h"
 #include "vtk_glew.h"
 
-#include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace
 {
