@@ -17,6 +17,14 @@
 // Usage: BenchmarkTetMeshBuild [--runs N] [--threads N] [--phases] [directory [file.vtu ...]]
 // The directory defaults to the source tree's Testing/Data/Meshes and the files to all of its
 // .vtu files. --phases adds, per dataset, the median time of each phase of a full build.
+//
+//        BenchmarkTetMeshBuild [--threads N] --generated RUNG [RUNG ...]
+// Rungs made in memory (GeneratedMeshes.h: wavelet6_100m ... wavelet6_1b), too large for the
+// table above: one build each as the mapper makes it (spatial and point ordering, compact
+// layout, scratch freed by stage), printed as CSV: the time to make the grid, the build's time
+// and rate, its phases, and the host's peak beyond the grid (VmHWM, ProcessMemory.h).
+#include "GeneratedMeshes.h"
+#include "ProcessMemory.h"
 #include "vtkDirectory.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -232,6 +240,61 @@ void BenchmarkMesh(vtkUnstructuredGrid* grid, const std::string& file, int runs,
   }
 }
 
+// One rung made in memory, built once as the mapper builds it: a CSV line (header first).
+bool BenchmarkGeneratedRung(const std::string& name, bool header)
+{
+  const generated::Rung* rung = generated::FindRung(name);
+  if (!rung)
+  {
+    std::fprintf(
+      stderr, "%s: no such generated rung (GeneratedMeshes.cxx lists them)\n", name.c_str());
+    return false;
+  }
+  double start = vtkTimerLog::GetUniversalTime();
+  vtkSmartPointer<vtkUnstructuredGrid> grid = generated::MakeRung(*rung);
+  const double makeTime = vtkTimerLog::GetUniversalTime() - start;
+  if (!grid)
+  {
+    return false;
+  }
+  const double gridBytes = trcbench::ProcessMemory("VmRSS");
+  const bool peakReset = trcbench::ResetPeakMemory();
+  vtkNew<vtkTetMeshBuilder> builder;
+  builder->SpatialOrderingOn();
+  builder->PointOrderingOn();
+  vtkNew<vtkTetMeshCompactLayout> layout;
+  vtkTimerLog::ResetLog();
+  vtkTimerLog::LoggingOn();
+  start = vtkTimerLog::GetUniversalTime();
+  vtkTetMesh* mesh = builder->Build(grid);
+  layout->Build(mesh);
+  const double buildTime = vtkTimerLog::GetUniversalTime() - start;
+  vtkTimerLog::LoggingOff();
+  const double tets = static_cast<double>(mesh->GetNumberOfTetrahedra());
+  const double peak = peakReset ? (trcbench::ProcessMemory("VmHWM") - gridBytes) / tets : NAN;
+  const double after = (trcbench::ProcessMemory("VmRSS") - gridBytes) / tets;
+  const std::map<std::string, double> phases = EventTimes();
+  if (header)
+  {
+    std::printf("rung,threads,tets,points,make_grid_s,build_s,build_mtet_per_s,"
+                "host_peak_bytes_per_tet,host_after_bytes_per_tet,usable,phases_ms\n");
+  }
+  std::string phaseList;
+  for (const auto& phase : phases)
+  {
+    char cell[160];
+    std::snprintf(cell, sizeof(cell), "%s%s=%.0f", phaseList.empty() ? "" : ";",
+      phase.first.c_str(), phase.second);
+    phaseList += cell;
+  }
+  std::printf("%s,%d,%.0f,%lld,%.2f,%.2f,%.2f,%.1f,%.1f,%d,\"%s\"\n", name.c_str(),
+    vtkSMPTools::GetEstimatedNumberOfThreads(), tets,
+    static_cast<long long>(mesh->GetNumberOfPoints()), makeTime, buildTime, tets / buildTime / 1e6,
+    peak, after, mesh->GetReport()->GetUsable() ? 1 : 0, phaseList.c_str());
+  std::fflush(stdout);
+  return mesh->GetReport()->GetUsable();
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -239,6 +302,7 @@ int main(int argc, char* argv[])
   int runs = 7;
   int threads = 0;
   bool phases = false;
+  bool generatedRungs = false;
   std::string directory = TRC_MESH_DATA_DIRECTORY;
   std::vector<std::string> files;
   std::vector<std::string> positional;
@@ -256,10 +320,15 @@ int main(int argc, char* argv[])
     {
       phases = true;
     }
+    else if (!std::strcmp(argv[a], "--generated"))
+    {
+      generatedRungs = true;
+    }
     else if (!std::strcmp(argv[a], "--help") || !std::strcmp(argv[a], "-h"))
     {
-      std::printf(
-        "usage: %s [--runs N] [--threads N] [--phases] [data directory [file.vtu ...]]\n", argv[0]);
+      std::printf("usage: %s [--runs N] [--threads N] [--phases] [data directory [file.vtu ...]]\n"
+                  "       %s [--threads N] --generated RUNG [RUNG ...]\n",
+        argv[0], argv[0]);
       return EXIT_SUCCESS;
     }
     else
@@ -274,6 +343,15 @@ int main(int argc, char* argv[])
     files.assign(positional.begin() + 1, positional.end());
   }
   vtkSMPTools::Initialize(threads);
+  if (generatedRungs)
+  {
+    bool ok = !positional.empty();
+    for (size_t r = 0; r < positional.size(); ++r)
+    {
+      ok = BenchmarkGeneratedRung(positional[r], r == 0) && ok;
+    }
+    return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+  }
   if (files.empty())
   {
     if (!ListMeshes(directory, files))

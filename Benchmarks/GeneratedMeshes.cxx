@@ -36,6 +36,7 @@ namespace
 const Rung Rungs[] = {
   // clang-format off
   { "wavelet6_1m",   "wavelet6", 55,  175616,    998250 },
+  { "wavelet6_10m",  "wavelet6", 119, 1728000,   10110954 },
   { "wavelet6_100m", "wavelet6", 256, 16974593,  100663296 },
   { "wavelet6_300m", "wavelet6", 368, 50243409,  299016192 },
   { "wavelet6_1b",   "wavelet6", 550, 167284151, 998250000 },

@@ -5,7 +5,8 @@
 # On the GPU machine, through the bundle (Module/bundle-gpu.sh, then on the device):
 #   TRC_SKIP_CTEST=1 TRC_THEN="Benchmarks/run_benchmarks.sh gpu \$OUT" Module/run-on-gpu.sh
 # "ladder" generates the dataset ladder's rungs and times our default setting on each (scaling);
-# "large" the ladder's 100M and 300M rungs made in memory, and meshes split over texture buffers;
+# "large" the ladder's 100M and 300M rungs made in memory (their build alone, then frames), and
+# meshes split over texture buffers;
 # "defaults" times our settings only, over tile size, tets per pass and query interval;
 # "pipelines" our two pipelines only, each at its default; "deforming" a mesh whose every point
 # moves every frame (BenchmarkDeformingMesh: rebuild, upload and render per frame); "empty"
@@ -164,7 +165,15 @@ case "$kind" in
     gpu_meshes bluntfin post torus_1m
     "$bench" --sweep buffers --size 1024 --frames 20 --csv "$out/buffers.csv" "${files[@]}"
     drop_ladder
-    for rung in ${TRC_LARGE_RUNGS:-wavelet6_100m gym6_100m wavelet6_300m gym6_300m}; do
+    rungs="${TRC_LARGE_RUNGS:-wavelet6_100m gym6_100m wavelet6_300m gym6_300m}"
+    # The mapper's mesh build alone, its phases and host peak (one process a rung, as above).
+    for rung in $rungs; do
+      "$build/Benchmarks/BenchmarkTetMeshBuild" --generated "$rung" > "$out/build-$rung.csv" ||
+        echo "$rung: build failed (status $?)"
+    done
+    cat "$out"/build-*.csv | awk 'NR == 1 || !/^rung,/' > "$out/large-build.csv"
+    rm -f "$out"/build-*.csv
+    for rung in $rungs; do
       "$bench" --sweep default --no-reference --size 1024 --frames 20 --csv "$out/large.csv" \
         "generated:$rung" || echo "$rung: failed (status $?)"
     done

@@ -344,7 +344,8 @@ void vtkTetMesh::CopyScalars(vtkDoubleArray* out)
   {
     return;
   }
-  const std::vector<double>& values = this->HasCellScalars ? this->CellScalars : this->PointScalars;
+  const vtkTetMeshVector<double>& values =
+    this->HasCellScalars ? this->CellScalars : this->PointScalars;
   out->SetNumberOfComponents(1);
   out->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
   std::copy(values.begin(), values.end(), out->GetPointer(0));

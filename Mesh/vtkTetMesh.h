@@ -49,10 +49,12 @@
 #include <vector>  // For std::vector
 
 #ifndef __VTK_WRAP__
-#include "vtkSmartPointer.h"    // For vtkSmartPointer
-#include "vtkTypeUInt32Array.h" // For vtkTetMeshWords
+#include "vtkSMPTools.h"                      // For vtkSMPTools::Fill in vtkTetMeshWords
+#include "vtkSmartPointer.h"                  // For vtkSmartPointer
+#include "vtkTetMeshUninitializedAllocator.h" // For vtkTetMeshVector
+#include "vtkTypeUInt32Array.h"               // For vtkTetMeshWords
 
-#include <algorithm> // For std::fill, std::swap
+#include <algorithm> // For std::swap
 
 /**
  * The storage of the mesh's point ids and neighbour words: a vtkTypeUInt32Array of 4
@@ -85,7 +87,7 @@ public:
   void assign(size_t n, uint32_t value)
   {
     this->resize(n);
-    std::fill(this->begin(), this->end(), value);
+    vtkSMPTools::Fill(this->begin(), this->end(), value);
   }
   void reserve(size_t n)
   {
@@ -370,17 +372,17 @@ protected:
   friend class vtkTetMeshScalarExtraction;
   friend class vtkTetMeshSpatialOrder;
 
-  std::vector<double> Points;
 #ifndef __VTK_WRAP__
+  vtkTetMeshVector<double> Points;
   vtkTetMeshWords TetPoints{ "TetPoints" };
   vtkTetMeshWords TetNeighbors{ "TetNeighbors" };
+  vtkTetMeshVector<uint32_t> BoundaryFaces;
+  vtkTetMeshVector<uint32_t> TetInputCellIds;
+  vtkTetMeshVector<uint32_t> PointInputIds; // empty: the input's points in its order
+  vtkTetMeshVector<uint8_t> TetFlags;
+  vtkTetMeshVector<double> PointScalars;
+  vtkTetMeshVector<double> CellScalars;
 #endif
-  std::vector<uint32_t> BoundaryFaces;
-  std::vector<uint32_t> TetInputCellIds;
-  std::vector<uint32_t> PointInputIds; // empty: the input's points in its order
-  std::vector<uint8_t> TetFlags;
-  std::vector<double> PointScalars;
-  std::vector<double> CellScalars;
   bool HasCellScalars = false;
   double ScalarRange[2] = { 0.0, 0.0 };
   double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };

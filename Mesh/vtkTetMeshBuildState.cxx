@@ -22,15 +22,15 @@
 namespace
 {
 template <typename T>
-size_t Bytes(const std::vector<T>& v)
+size_t Bytes(const vtkTetMeshVector<T>& v)
 {
   return v.capacity() * sizeof(T);
 }
 
 template <typename T>
-void Free(std::vector<T>& v)
+void Free(vtkTetMeshVector<T>& v)
 {
-  std::vector<T>().swap(v);
+  vtkTetMeshVector<T>().swap(v);
 }
 
 size_t Bytes(const vtkTetMeshWords& words)
@@ -115,7 +115,6 @@ vtkIdType vtkTetMeshBuildState::GetScratchSize() const
   return static_cast<vtkIdType>(Bytes(this->FaceEntries) + Bytes(this->FaceCounts) +
     Bytes(this->BucketStarts) + Bytes(this->FaceSides) + Bytes(this->SortKeys) +
     Bytes(this->SortScratch) + Bytes(this->SortTetPoints) + Bytes(this->SortCellIds) +
-    Bytes(this->PointBuckets) + Bytes(this->PointBucketStarts) + Bytes(this->PointOrder) +
     Bytes(this->Canonical));
 }
 
@@ -130,9 +129,6 @@ void vtkTetMeshBuildState::ReleaseScratch()
   Free(this->SortScratch);
   Free(this->SortTetPoints);
   Free(this->SortCellIds);
-  Free(this->PointBuckets);
-  Free(this->PointBucketStarts);
-  Free(this->PointOrder);
   Free(this->Canonical);
 }
 

@@ -109,7 +109,7 @@ public:
   std::string ScalarError;
 
   // The scalar values per input cell (cell scalars only), before mapping to tetrahedra.
-  std::vector<double> InputCellScalars;
+  vtkTetMeshVector<double> InputCellScalars;
 
   // Scratch space of the face matching, kept between builds: allocating (and first touching)
   // tens of megabytes anew costs more than the matching itself.
@@ -122,20 +122,17 @@ public:
     uint32_t Hi;
     uint32_t Face; // (t << 2) | i
   };
-  std::vector<FaceEntry> FaceEntries;
-  std::vector<uint32_t> FaceCounts;
-  std::vector<uint64_t> BucketStarts;
-  std::vector<uint8_t> FaceSides; // face matching: the parity of each face, 4 bits per tet
+  vtkTetMeshVector<FaceEntry> FaceEntries;
+  vtkTetMeshVector<uint32_t> FaceCounts;
+  vtkTetMeshVector<uint64_t> BucketStarts;
+  vtkTetMeshVector<uint8_t> FaceSides; // face matching: the parity of each face, 4 bits per tet
   // Likewise for the spatial sort (the permuted arrays are swapped with the mesh's).
-  std::vector<uint64_t> SortKeys;
-  std::vector<uint64_t> SortScratch;
+  vtkTetMeshVector<uint64_t> SortKeys;
+  vtkTetMeshVector<uint64_t> SortScratch;
   vtkTetMeshWords SortTetPoints{ "TetPoints" }; // swapped with the mesh's
-  std::vector<uint32_t> SortCellIds;
-  // Likewise for duplicate points.
-  std::vector<uint32_t> PointBuckets;
-  std::vector<uint32_t> PointBucketStarts;
-  std::vector<uint32_t> PointOrder;
-  std::vector<uint32_t> Canonical;
+  vtkTetMeshVector<uint32_t> SortCellIds;
+  // Duplicate points (the search sorts SortKeys too): the canonical id of each point.
+  vtkTetMeshVector<uint32_t> Canonical;
 
   /**
    * Bytes held by the scratch buffers, and freeing them.

@@ -305,17 +305,23 @@ bool vtkTetMeshCellExtraction::CopyAllTetrahedra(
   const vtkIdType numCells = ug->GetNumberOfCells();
   vtkCellArray* cells = ug->GetCells();
   const unsigned char* typePtr = ug->GetCellTypesArray()->GetPointer(0);
-  bool allTets = cells->GetNumberOfConnectivityIds() == 4 * numCells;
-  for (vtkIdType c = 0; c < numCells && allTets; ++c)
-  {
-    allTets = typePtr[c] == VTK_TETRA;
-  }
+  std::atomic<bool> allTets(cells->GetNumberOfConnectivityIds() == 4 * numCells);
+  vtkSMPTools::For(0, allTets ? numCells : 0, 1 << 20,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      if (allTets &&
+        std::any_of(
+          typePtr + begin, typePtr + end, [](unsigned char type) { return type != VTK_TETRA; }))
+      {
+        allTets = false;
+      }
+    });
   if (!allTets)
   {
     return false;
   }
   vtkTetMeshWords& tetPoints = mesh->TetPoints;
-  std::vector<uint32_t>& cellIds = mesh->TetInputCellIds;
+  vtkTetMeshVector<uint32_t>& cellIds = mesh->TetInputCellIds;
   tetPoints.resize(4 * static_cast<size_t>(numCells));
   cellIds.resize(static_cast<size_t>(numCells));
   std::atomic<vtkIdType> invalid(0);

@@ -14,13 +14,13 @@
 #include "vtkSMPTools.h"
 #include "vtkTetMesh.h"
 #include "vtkTetMeshBuildState.h"
+#include "vtkTetMeshSpatialOrder.h"
 #include "vtkTetMeshValidationReport.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -164,22 +164,13 @@ private:
 void vtkTetMeshDefectSearch::FindDuplicatesAndCracks(vtkTetMeshBuildState& state)
 {
   vtkTetMeshValidationReport* report = state.GetReport();
-  const vtkIdType numPoints = state.Mesh->GetNumberOfPoints();
   report->SetNumberOfDuplicatePoints(0);
   report->SetNumberOfCrackFaces(0);
-  if (numPoints < 2)
+  if (state.Mesh->GetNumberOfPoints() < 2)
   {
     return;
   }
-  // Points bucketed by a hash of their coordinates with a counting sort (a few points per
-  // bucket): equal coordinates share a bucket, where they are compared exactly.
-  size_t numBuckets = 1;
-  while (numBuckets < static_cast<size_t>(numPoints) / 2)
-  {
-    numBuckets <<= 1;
-  }
-  BucketPoints(state, numBuckets);
-  const vtkIdType duplicates = GroupDuplicatePoints(state, numBuckets);
+  const vtkIdType duplicates = GroupDuplicatePoints(state);
   report->SetNumberOfDuplicatePoints(duplicates);
   if (duplicates > 0)
   {
@@ -188,15 +179,18 @@ void vtkTetMeshDefectSearch::FindDuplicatesAndCracks(vtkTetMeshBuildState& state
 }
 
 //------------------------------------------------------------------------------
-// state.PointOrder: the point ids ordered by bucket (ascending inside each), bucket b from
-// state.PointBucketStarts[b].
-void vtkTetMeshDefectSearch::BucketPoints(vtkTetMeshBuildState& state, size_t numBuckets)
+// state.SortKeys: one key per point, a hash of its coordinates above its id (idBits bits),
+// sorted by the hash (stable: ids ascend among equal hashes). Equal coordinates hash equal and
+// end up side by side. In parallel throughout: at a billion tetrahedra (167M points) the
+// counting sort by bucket this replaced took 13 s of a 76 s build on 16 cores, on one thread.
+void vtkTetMeshDefectSearch::SortPointsByHash(vtkTetMeshBuildState& state, int idBits)
 {
   const vtkIdType numPoints = state.Mesh->GetNumberOfPoints();
   const double* p = state.Mesh->Points.data();
-  std::vector<uint32_t>& bucketOf = state.PointBuckets;
-  bucketOf.resize(static_cast<size_t>(numPoints));
-  vtkSMPTools::For(0, numPoints, 16384,
+  const uint64_t idMask = (uint64_t(1) << idBits) - 1;
+  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
+  keys.resize(static_cast<size_t>(numPoints));
+  vtkSMPTools::For(0, numPoints, 65536,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -211,68 +205,89 @@ void vtkTetMeshDefectSearch::BucketPoints(vtkTetMeshBuildState& state, size_t nu
           h = (h ^ bits) * 0xff51afd7ed558ccdull;
           h ^= h >> 29;
         }
-        bucketOf[i] = static_cast<uint32_t>((h >> 20) & (numBuckets - 1));
+        keys[i] = (h & ~idMask) | static_cast<uint64_t>(i);
       }
     });
-  std::vector<uint32_t>& bucketStart = state.PointBucketStarts;
-  bucketStart.assign(numBuckets + 1, 0u);
-  for (uint32_t b : bucketOf)
-  {
-    ++bucketStart[b + 1];
-  }
-  std::partial_sum(bucketStart.begin(), bucketStart.end(), bucketStart.begin());
-  std::vector<uint32_t>& order = state.PointOrder;
-  order.resize(static_cast<size_t>(numPoints));
-  for (size_t i = 0; i < order.size(); ++i)
-  {
-    // bucketStart[b] runs ahead while filling bucket b - 1: shift back afterwards.
-    order[bucketStart[bucketOf[i]]++] = static_cast<uint32_t>(i);
-  }
-  std::copy_backward(bucketStart.begin(), bucketStart.end() - 1, bucketStart.end());
-  bucketStart[0] = 0;
+  vtkTetMeshSpatialOrder::SortKeys(state, idBits);
 }
 
 //------------------------------------------------------------------------------
 // state.Canonical[v]: the smallest id with v's coordinates (only where v has duplicates; left
 // empty where no point has). Returns the number of duplicate points.
-vtkIdType vtkTetMeshDefectSearch::GroupDuplicatePoints(
-  vtkTetMeshBuildState& state, size_t numBuckets)
+vtkIdType vtkTetMeshDefectSearch::GroupDuplicatePoints(vtkTetMeshBuildState& state)
 {
   const vtkIdType numPoints = state.Mesh->GetNumberOfPoints();
+  const int idBits = numPoints < (vtkIdType(1) << 31) ? 31 : 32;
+  SortPointsByHash(state, idBits);
+  const uint64_t idMask = (uint64_t(1) << idBits) - 1;
+  const uint64_t* keys = state.SortKeys.data();
   const double* p = state.Mesh->Points.data();
-  const std::vector<uint32_t>& bucketStart = state.PointBucketStarts;
-  const std::vector<uint32_t>& order = state.PointOrder;
-  std::vector<uint32_t>& canonical = state.Canonical;
-  canonical.clear();
-  vtkIdType duplicates = 0;
-  for (size_t b = 0; b < numBuckets; ++b)
+  auto sameHash = [&](vtkIdType a, vtkIdType b)
+  { return (keys[a] & ~idMask) == (keys[b] & ~idMask); };
+
+  // Every run of equal hashes, its points compared exactly (the first of a group is its
+  // smallest id); runs in parallel, each owned by the block it starts in. With `canonical`,
+  // the groups are written there; without, only counted (duplicates are rare: the array is
+  // made only when there are some).
+  auto group = [&](uint32_t* canonical)
   {
-    // Ids ascend inside a bucket: the first of a group is its smallest.
-    for (uint32_t k = bucketStart[b]; k + 1 < bucketStart[b + 1]; ++k)
-    {
-      const uint32_t idK = order[k];
-      if (!canonical.empty() && canonical[idK] != NoNeighbor)
+    std::atomic<vtkIdType> duplicates(0);
+    vtkSMPTools::For(0, numPoints, 65536,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        continue; // already grouped with an earlier point
-      }
-      const double* pk = p + 3 * static_cast<size_t>(idK);
-      for (uint32_t m = k + 1; m < bucketStart[b + 1]; ++m)
-      {
-        const uint32_t idM = order[m];
-        const double* pm = p + 3 * static_cast<size_t>(idM);
-        if ((canonical.empty() || canonical[idM] == NoNeighbor) && pk[0] == pm[0] &&
-          pk[1] == pm[1] && pk[2] == pm[2])
+        vtkIdType found = 0;
+        std::vector<char> grouped;
+        vtkIdType run = begin;
+        while (run > 0 && run < numPoints && sameHash(run, run - 1))
         {
-          if (canonical.empty())
-          {
-            canonical.assign(static_cast<size_t>(numPoints), NoNeighbor);
-          }
-          canonical[idK] = idK;
-          canonical[idM] = idK;
-          ++duplicates;
+          ++run; // the run that crosses `begin` belongs to the block before
         }
-      }
-    }
+        while (run < end)
+        {
+          vtkIdType runEnd = run + 1;
+          while (runEnd < numPoints && sameHash(runEnd, run))
+          {
+            ++runEnd;
+          }
+          grouped.assign(static_cast<size_t>(runEnd - run), 0);
+          for (vtkIdType k = run; k + 1 < runEnd; ++k)
+          {
+            if (grouped[k - run])
+            {
+              continue; // already grouped with an earlier point
+            }
+            const size_t idK = static_cast<size_t>(keys[k] & idMask);
+            const double* pk = p + 3 * idK;
+            for (vtkIdType m = k + 1; m < runEnd; ++m)
+            {
+              const size_t idM = static_cast<size_t>(keys[m] & idMask);
+              const double* pm = p + 3 * idM;
+              if (!grouped[m - run] && pk[0] == pm[0] && pk[1] == pm[1] && pk[2] == pm[2])
+              {
+                grouped[m - run] = 1;
+                ++found;
+                if (canonical)
+                {
+                  canonical[idK] = static_cast<uint32_t>(idK);
+                  canonical[idM] = static_cast<uint32_t>(idK);
+                }
+              }
+            }
+          }
+          run = runEnd;
+        }
+        duplicates += found;
+      });
+    return duplicates.load();
+  };
+  vtkTetMeshVector<uint32_t>& canonical = state.Canonical;
+  canonical.clear();
+  const vtkIdType duplicates = group(nullptr);
+  if (duplicates > 0)
+  {
+    canonical.resize(static_cast<size_t>(numPoints));
+    vtkSMPTools::Fill(canonical.begin(), canonical.end(), NoNeighbor);
+    group(canonical.data());
   }
   return duplicates;
 }
@@ -283,8 +298,8 @@ vtkIdType vtkTetMeshDefectSearch::GroupDuplicatePoints(
 vtkIdType vtkTetMeshDefectSearch::CountCrackFaces(vtkTetMeshBuildState& state)
 {
   vtkTetMesh* mesh = state.Mesh;
-  const std::vector<uint32_t>& canonical = state.Canonical;
-  const std::vector<uint32_t>& boundary = mesh->BoundaryFaces;
+  const vtkTetMeshVector<uint32_t>& canonical = state.Canonical;
+  const vtkTetMeshVector<uint32_t>& boundary = mesh->BoundaryFaces;
   BoundaryFaceGeometry geometry;
   geometry.Points = mesh->Points.data();
   geometry.TetPoints = mesh->TetPoints.data();

@@ -13,18 +13,16 @@
  * @brief   private: vtkTetMeshBuilder's search for duplicate points and crack faces
  *
  * Duplicate points: points with exactly equal coordinates, found through a hash of the
- * coordinates, bucketed with a counting sort. Crack faces: boundary faces that overlap another
- * boundary face made of coincident but distinct points (same plane, facing the other way,
- * interiors intersecting), as along an unwelded seam. Both counts go into the report; they are
- * searched at full builds only.
+ * coordinates, sorted with the builder's parallel radix sort. Crack faces: boundary faces that
+ * overlap another boundary face made of coincident but distinct points (same plane, facing the
+ * other way, interiors intersecting), as along an unwelded seam. Both counts go into the report;
+ * they are searched at full builds only.
  */
 
 #ifndef vtkTetMeshDefectSearch_h
 #define vtkTetMeshDefectSearch_h
 
 #include "vtkType.h" // For vtkIdType
-
-#include <cstddef> // For size_t
 
 class vtkTetMeshBuildState;
 
@@ -37,8 +35,8 @@ public:
   static void FindDuplicatesAndCracks(vtkTetMeshBuildState& state);
 
 private:
-  static void BucketPoints(vtkTetMeshBuildState& state, size_t numBuckets);
-  static vtkIdType GroupDuplicatePoints(vtkTetMeshBuildState& state, size_t numBuckets);
+  static void SortPointsByHash(vtkTetMeshBuildState& state, int idBits);
+  static vtkIdType GroupDuplicatePoints(vtkTetMeshBuildState& state);
   static vtkIdType CountCrackFaces(vtkTetMeshBuildState& state);
 };
 

@@ -79,6 +79,7 @@ private:
   };
   static void BucketFaces(
     vtkTetMeshBuildState& state, uint32_t first, uint32_t last, vtkIdType faces);
+  static uint64_t PrefixSums(vtkTetMeshBuildState& state, int blocks, size_t numPoints);
   static void PairFaces(vtkTetMeshBuildState& state, size_t buckets, Pairing& result);
 };
 

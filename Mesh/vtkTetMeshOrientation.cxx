@@ -30,7 +30,13 @@ bool vtkTetMeshOrientation::Classify(vtkTetMeshBuildState& state, double toleran
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const double* p = mesh->Points.data();
   uint32_t* tp = mesh->TetPoints.data();
+  // New flags start clear (a full build clears them first); a points-only rebuild keeps them.
+  const size_t kept = mesh->TetFlags.size();
   mesh->TetFlags.resize(static_cast<size_t>(numTets));
+  if (mesh->TetFlags.size() > kept)
+  {
+    vtkSMPTools::Fill(mesh->TetFlags.begin() + kept, mesh->TetFlags.end(), uint8_t(0));
+  }
   uint8_t* flags = mesh->TetFlags.data();
   std::atomic<bool> needsFlip(false);
   vtkSMPTools::For(0, numTets, 16384,

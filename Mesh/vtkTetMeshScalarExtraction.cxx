@@ -62,7 +62,7 @@ bool vtkTetMeshScalarExtraction::ReadScalars(vtkTetMeshBuildState& state, vtkDat
     return false;
   }
 
-  std::vector<double>& values = cellFlag == 0 ? mesh->PointScalars : state.InputCellScalars;
+  vtkTetMeshVector<double>& values = cellFlag == 0 ? mesh->PointScalars : state.InputCellScalars;
   values.resize(static_cast<size_t>(expected));
   vtkTetScalarSelection::Extract(array, magnitude, component, values.data());
   if (cellFlag == 0)
@@ -139,7 +139,8 @@ bool vtkTetMeshScalarExtraction::CheckArray(vtkDataArray* array, vtkIdType expec
 void vtkTetMeshScalarExtraction::StoreValues(vtkTetMeshBuildState& state, int cellFlag)
 {
   vtkTetMesh* mesh = state.Mesh;
-  const std::vector<double>& values = cellFlag == 0 ? mesh->PointScalars : state.InputCellScalars;
+  const vtkTetMeshVector<double>& values =
+    cellFlag == 0 ? mesh->PointScalars : state.InputCellScalars;
   double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
   vtkIdType nonFinite = 0;
   for (double v : values)

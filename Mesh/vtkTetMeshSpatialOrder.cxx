@@ -70,9 +70,9 @@ void vtkTetMeshSpatialOrder::Sort(vtkTetMeshBuildState& state)
   vtkTetMesh* mesh = state.Mesh;
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const uint32_t* tp = mesh->TetPoints.data();
-  const std::vector<uint64_t>& keys = state.SortKeys;
+  const vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
   vtkTetMeshWords& tetPoints = state.SortTetPoints;
-  std::vector<uint32_t>& cellIds = state.SortCellIds;
+  vtkTetMeshVector<uint32_t>& cellIds = state.SortCellIds;
   tetPoints.resize(mesh->TetPoints.size());
   cellIds.resize(mesh->TetInputCellIds.size());
   vtkSMPTools::For(0, numTets, 16384,
@@ -98,7 +98,7 @@ void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
   const double* p = mesh->Points.data();
   const uint32_t* tp = mesh->TetPoints.data();
   const MortonGrid grid(mesh->Bounds);
-  std::vector<uint64_t>& keys = state.SortKeys;
+  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
   keys.resize(static_cast<size_t>(numTets));
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
@@ -129,7 +129,7 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
   // One key per point: 33 bits of Morton code of its position above its 31-bit id.
   const double* p = mesh->Points.data();
   const MortonGrid grid(mesh->Bounds);
-  std::vector<uint64_t>& keys = state.SortKeys;
+  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
   keys.resize(static_cast<size_t>(numPoints));
   vtkSMPTools::For(0, numPoints, 65536,
     [&](vtkIdType begin, vtkIdType end)
@@ -144,7 +144,7 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
   // The input id of each new point, the new id of each input point, then the points and the
   // tetrahedra's ids in the new numbering.
   mesh->PointInputIds.resize(static_cast<size_t>(numPoints));
-  std::vector<uint32_t>& newIds = state.SortCellIds; // scratch of the right type
+  vtkTetMeshVector<uint32_t>& newIds = state.SortCellIds; // scratch of the right type
   newIds.resize(static_cast<size_t>(numPoints));
   uint32_t* inputIds = mesh->PointInputIds.data();
   vtkSMPTools::For(0, numPoints, 65536,
@@ -172,11 +172,11 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
 
 //------------------------------------------------------------------------------
 // Three stable counting passes of 11 bits over the code above the `idBits` bits of the id
-// (least significant first): linear, and ties stay in input order.
+// (least significant first): linear, and ties stay in input order. Bits above 63 are none.
 void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state, int idBits)
 {
-  std::vector<uint64_t>& keys = state.SortKeys;
-  std::vector<uint64_t>& scratch = state.SortScratch;
+  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
+  vtkTetMeshVector<uint64_t>& scratch = state.SortScratch;
   scratch.resize(keys.size());
   // Each pass in parallel: every block of keys counts its digits, the counts' prefix sums in
   // (digit, block) order give each block where its keys of each digit go, and the blocks
@@ -185,7 +185,7 @@ void vtkTetMeshSpatialOrder::SortKeys(vtkTetMeshBuildState& state, int idBits)
   const vtkIdType n = static_cast<vtkIdType>(keys.size());
   const int blocks = vtkTetMeshBuildState::NumberOfBlocks(n);
   std::vector<size_t> position(static_cast<size_t>(blocks) * 2048);
-  for (int shift = idBits; shift < idBits + 33; shift += 11)
+  for (int shift = idBits; shift < std::min(64, idBits + 33); shift += 11)
   {
     std::fill(position.begin(), position.end(), 0);
     vtkTetMeshBuildState::ForBlocks(n, blocks,

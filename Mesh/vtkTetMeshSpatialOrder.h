@@ -23,8 +23,6 @@
 #include "vtkSMPTools.h" // For vtkSMPTools in ApplyPointOrder
 #include "vtkTetMesh.h"  // For vtkTetMesh::GetPointInputIds in ApplyPointOrder
 
-#include <vector> // For std::vector
-
 class vtkTetMeshBuildState;
 
 class vtkTetMeshSpatialOrder
@@ -48,24 +46,30 @@ public:
    * order (PointInputIds); nothing when the mesh keeps the input's order.
    */
   template <typename T>
-  static void ApplyPointOrder(const vtkTetMesh* mesh, std::vector<T>& values, int components);
+  static void ApplyPointOrder(const vtkTetMesh* mesh, vtkTetMeshVector<T>& values, int components);
+
+  /**
+   * state.SortKeys sorted by their 33 bits above the low `idBits` (those above bit 63 are
+   * none): three counting passes of 11 bits, each in parallel by blocks, stable (ties keep
+   * their order) and the same result on any number of threads.
+   */
+  static void SortKeys(vtkTetMeshBuildState& state, int idBits);
 
 private:
   static void ComputeKeys(vtkTetMeshBuildState& state);
-  static void SortKeys(vtkTetMeshBuildState& state, int idBits);
 };
 
 //------------------------------------------------------------------------------
 template <typename T>
 void vtkTetMeshSpatialOrder::ApplyPointOrder(
-  const vtkTetMesh* mesh, std::vector<T>& values, int components)
+  const vtkTetMesh* mesh, vtkTetMeshVector<T>& values, int components)
 {
   const uint32_t* inputIds = mesh->GetPointInputIds();
   if (!inputIds)
   {
     return;
   }
-  std::vector<T> ordered(values.size());
+  vtkTetMeshVector<T> ordered(values.size());
   vtkSMPTools::For(0, mesh->GetNumberOfPoints(), 65536,
     [&](vtkIdType begin, vtkIdType end)
     {
