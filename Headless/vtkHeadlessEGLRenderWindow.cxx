@@ -17,6 +17,7 @@
 #include "vtkHeadlessEGLContext.h" // EGL's headers come with it, kept free of X11
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLState.h"
 
 #include <sstream>
 #include <stack>
@@ -557,7 +558,16 @@ int vtkHeadlessEGLRenderWindow::GetDepthBufferSize()
   {
     return 0;
   }
-  return this->Superclass::GetDepthBufferSize();
+  // VTK queries the draw framebuffer bound now. Between frames that is the display framebuffer,
+  // which has no depth attachment: the query is then GL_INVALID_OPERATION, left for the next GL
+  // error check to find (vtkRenderer::ResetCameraClippingRange asks, from ResetCamera). The
+  // depth that matters is the one the scene is rendered into.
+  vtkOpenGLState* state = this->GetState();
+  state->PushDrawFramebufferBinding();
+  this->RenderFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+  int size = this->Superclass::GetDepthBufferSize();
+  state->PopDrawFramebufferBinding();
+  return size;
 }
 
 int vtkHeadlessEGLRenderWindow::ReadPixels(
