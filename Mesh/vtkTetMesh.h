@@ -45,6 +45,7 @@
 #include "vtkTiledRayCastMeshModule.h"  // For export macro
 #include "vtkTimeStamp.h"               // For vtkTimeStamp
 
+#include <cmath>   // For std::ldexp, std::ilogb
 #include <cstdint> // For uint32_t
 #include <vector>  // For std::vector
 
@@ -178,6 +179,24 @@ public:
   {
     const double middle = 0.5 * range[0] + 0.5 * range[1];
     return middle - middle == 0.0 ? middle : 0.0; // finite
+  }
+
+  /**
+   * And multiply them by this power of two (exact), after the shift: 1 unless the range's
+   * half-width exceeds 2^32, and then a scale that brings it into [2^31, 2^32). Float holds
+   * values up to 3.4e38, but the differences and gradients of scalars spanning +-3e38 overflow
+   * it; scaled, they keep float's precision. The transfer function's nodes, the tables' scalar
+   * maps, the blend modes' ranges and the gradient-opacity magnitudes are scaled alike.
+   */
+  double GetScalarScale() const { return vtkTetMesh::ComputeScalarScale(this->ScalarRange); }
+  static double ComputeScalarScale(const double range[2])
+  {
+    const double half = 0.5 * range[1] - 0.5 * range[0];
+    if (!(half > 4294967296.0) || half - half != 0.0) // up to 2^32, or not finite
+    {
+      return 1.0;
+    }
+    return std::ldexp(1.0, 31 - std::ilogb(half));
   }
   ///@}
 

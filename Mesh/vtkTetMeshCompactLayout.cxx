@@ -140,6 +140,7 @@ void vtkTetMeshCompactLayout::PackPoints(vtkTetMesh* mesh)
   double shift[3];
   mesh->GetShift(shift);
   const double scalarShift = mesh->GetScalarShift();
+  const double scalarScale = mesh->GetScalarScale();
   vtkSMPTools::For(0, numPoints, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -148,7 +149,7 @@ void vtkTetMeshCompactLayout::PackPoints(vtkTetMesh* mesh)
         out[4 * i] = static_cast<float>(p[3 * i] - shift[0]);
         out[4 * i + 1] = static_cast<float>(p[3 * i + 1] - shift[1]);
         out[4 * i + 2] = static_cast<float>(p[3 * i + 2] - shift[2]);
-        out[4 * i + 3] = s ? FiniteOrInfinity(s[i] - scalarShift) : 0.0f;
+        out[4 * i + 3] = s ? FiniteOrInfinity((s[i] - scalarShift) * scalarScale) : 0.0f;
       }
     });
 }
@@ -164,6 +165,7 @@ void vtkTetMeshCompactLayout::PackCellScalars(vtkTetMesh* mesh)
     return;
   }
   const double scalarShift = mesh->GetScalarShift();
+  const double scalarScale = mesh->GetScalarScale();
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   array->SetNumberOfTuples(numTets);
   float* out = array->GetPointer(0);
@@ -172,7 +174,7 @@ void vtkTetMeshCompactLayout::PackCellScalars(vtkTetMesh* mesh)
     {
       for (vtkIdType t = begin; t < end; ++t)
       {
-        out[t] = FiniteOrInfinity(s[t] - scalarShift);
+        out[t] = FiniteOrInfinity((s[t] - scalarShift) * scalarScale);
       }
     });
 }

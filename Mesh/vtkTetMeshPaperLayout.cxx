@@ -186,6 +186,7 @@ void vtkTetMeshPaperLayout::PackScalars(vtkTetMesh* mesh)
 {
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   const double scalarShift = mesh->GetScalarShift();
+  const double scalarScale = mesh->GetScalarScale();
   const vtkIdType width = this->PackedWidth;
   float* data =
     static_cast<vtkFloatArray*>(this->Arrays[NeighborsAndScalarsArray].Array.Get())->GetPointer(0);
@@ -198,10 +199,10 @@ void vtkTetMeshPaperLayout::PackScalars(vtkTetMesh* mesh)
         float* texel = data + 4 * ((3 * (t / width) + 2) * width + t % width);
         if (mesh->ComputeScalarGradientFast(t, gc))
         {
-          gc[3] -= scalarShift; // see vtkTetMesh::GetScalarShift
+          gc[3] -= scalarShift; // see vtkTetMesh::GetScalarShift and GetScalarScale
           for (int k = 0; k < 4; ++k)
           {
-            texel[k] = static_cast<float>(gc[k]);
+            texel[k] = static_cast<float>(gc[k] * scalarScale);
           }
         }
         else

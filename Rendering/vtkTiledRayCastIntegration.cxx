@@ -55,9 +55,11 @@ int vtkTiledRayCastIntegration::GetMode(vtkTiledRayCastVolumeMapper* mapper) con
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastIntegration::SetUniforms(vtkShaderProgram* p, int mode, double scalarShift)
+void vtkTiledRayCastIntegration::SetUniforms(
+  vtkShaderProgram* p, int mode, double scalarShift, double scalarScale)
 {
-  this->Textures.SetUniforms(p, mode, this->TransferFunction, this->Table, scalarShift);
+  this->Textures.SetUniforms(
+    p, mode, this->TransferFunction, this->Table, scalarShift, scalarScale);
 }
 
 //------------------------------------------------------------------------------

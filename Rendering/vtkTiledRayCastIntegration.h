@@ -102,7 +102,7 @@ public:
   /**
    * The uniforms of `mode`'s textures (vtkTiledRayCastIntegrationTextures::SetUniforms).
    */
-  void SetUniforms(vtkShaderProgram* program, int mode, double scalarShift);
+  void SetUniforms(vtkShaderProgram* program, int mode, double scalarShift, double scalarScale);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

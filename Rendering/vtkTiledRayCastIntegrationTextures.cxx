@@ -151,7 +151,7 @@ void vtkTiledRayCastIntegrationTextures::ActivateTextures(int mode, bool activat
 //------------------------------------------------------------------------------
 void vtkTiledRayCastIntegrationTextures::SetUniforms(vtkShaderProgram* p, int mode,
   vtkTiledRayCastTransferFunction* transferFunction, vtkTiledRayCastPreIntegrationTable* table,
-  double scalarShift)
+  double scalarShift, double scalarScale)
 {
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
@@ -165,10 +165,11 @@ void vtkTiledRayCastIntegrationTextures::SetUniforms(vtkShaderProgram* p, int mo
   table->GetSize(size);
   double range[2];
   table->GetScalarRange(range);
-  // The mesh's scalars are shifted on the GPU (vtkTetMesh::GetScalarShift): so is the table's
-  // first grid scalar.
-  const float scalarMap[3] = { static_cast<float>(range[0] - scalarShift),
-    static_cast<float>(range[1] > range[0] ? (size[0] - 1) / (range[1] - range[0]) : 0.0),
+  // The mesh's scalars are shifted and scaled on the GPU (vtkTetMesh::GetScalarShift,
+  // GetScalarScale): so are the table's first grid scalar and its spacing.
+  const float scalarMap[3] = { static_cast<float>((range[0] - scalarShift) * scalarScale),
+    static_cast<float>(
+      range[1] > range[0] ? (size[0] - 1) / ((range[1] - range[0]) * scalarScale) : 0.0),
     static_cast<float>(size[0]) };
   p->SetUniformi("in_preIntegrationTable", this->TableTexture->GetTextureUnit());
   p->SetUniform3f("in_tableScalarMap", scalarMap);

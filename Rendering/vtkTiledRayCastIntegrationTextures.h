@@ -69,11 +69,11 @@ public:
   /**
    * The uniforms of `mode`'s textures: for partial pre-integration the node list (and its node
    * count) and the Psi table; for the table modes the table and how scalars (shifted by
-   * `scalarShift` on the GPU) and lengths map into it.
+   * `scalarShift` and scaled by `scalarScale` on the GPU) and lengths map into it.
    */
   void SetUniforms(vtkShaderProgram* program, int mode,
     vtkTiledRayCastTransferFunction* transferFunction, vtkTiledRayCastPreIntegrationTable* table,
-    double scalarShift);
+    double scalarShift, double scalarScale);
 
   void ReleaseGraphicsResources(vtkWindow* window);
 

@@ -482,14 +482,15 @@ void vtkTiledRayCastTransferFunction::FinishBuild(const double scalarRange[2])
       this->NarrowestFeature = std::min(this->NarrowestFeature, d);
     }
   }
-  // The shader's node scalars are shifted as the mesh's (vtkTetMesh::GetScalarShift), in
-  // double before they become float.
+  // The shader's node scalars are shifted and scaled as the mesh's (vtkTetMesh::GetScalarShift,
+  // GetScalarScale), in double before they become float.
   const double shift = vtkTetMesh::ComputeScalarShift(scalarRange);
+  const double scale = vtkTetMesh::ComputeScalarScale(scalarRange);
   const size_t n = this->Scalars.size();
   this->Texels.assign(8 * n, 0.0f);
   for (size_t i = 0; i < n; ++i)
   {
-    this->Texels[8 * i + 0] = static_cast<float>(this->Scalars[i] - shift);
+    this->Texels[8 * i + 0] = static_cast<float>((this->Scalars[i] - shift) * scale);
     this->Texels[8 * i + 1] = static_cast<float>(this->Attenuations[i]);
     this->Texels[8 * i + 4] = static_cast<float>(this->Colors[3 * i + 0]);
     this->Texels[8 * i + 5] = static_cast<float>(this->Colors[3 * i + 1]);

@@ -91,13 +91,17 @@ void vtkTiledRayCastUniforms::SetMeshUniforms(vtkShaderProgram* p)
 //------------------------------------------------------------------------------
 void vtkTiledRayCastUniforms::SetBlendUniforms(vtkShaderProgram* p)
 {
-  // Scalars and transfer-function nodes are shifted on the GPU (vtkTetMesh::GetScalarShift).
-  const double shift = vtkTetMesh::ComputeScalarShift(this->Part.Mesh->ScalarRange);
-  const float range[2] = { static_cast<float>(this->Part.Mesh->ScalarRange[0] - shift),
-    static_cast<float>(this->Part.Mesh->ScalarRange[1] - shift) };
+  // Scalars and transfer-function nodes are shifted and scaled on the GPU
+  // (vtkTetMesh::GetScalarShift, GetScalarScale).
+  const double* meshRange = this->Part.Mesh->ScalarRange;
+  const double shift = vtkTetMesh::ComputeScalarShift(meshRange);
+  const double scale = vtkTetMesh::ComputeScalarScale(meshRange);
+  const float range[2] = { static_cast<float>((meshRange[0] - shift) * scale),
+    static_cast<float>((meshRange[1] - shift) * scale) };
   const double* average = this->Part.Mapper->GetAverageIPScalarRange();
-  const float averageRange[2] = { static_cast<float>(std::max(average[0] - shift, -3.0e38)),
-    static_cast<float>(std::min(average[1] - shift, 3.0e38)) };
+  const float averageRange[2] = { static_cast<float>(
+                                    std::max((average[0] - shift) * scale, -3.0e38)),
+    static_cast<float>(std::min((average[1] - shift) * scale, 3.0e38)) };
   p->SetUniformi("in_blendMode", this->Part.Mapper->GetBlendMode());
   p->SetUniform2f("in_blendScalarRange", range);
   p->SetUniform2f("in_averageRange", averageRange);
@@ -118,7 +122,16 @@ void vtkTiledRayCastUniforms::SetShadingUniforms(vtkShaderProgram* p)
   if (gradientOpacity.Enabled)
   {
     p->SetUniformi("in_gradientOpacityNodes", gradientOpacity.NumberOfNodes);
-    p->SetUniform2fv("in_gradientOpacity", gradientOpacity.NumberOfNodes, gradientOpacity.Nodes[0]);
+    // The gradients the shaders compute are in the GPU's scaled scalar units
+    // (vtkTetMesh::GetScalarScale): so are the nodes' magnitudes, scaled in double.
+    const double scale = vtkTetMesh::ComputeScalarScale(this->Part.Mesh->ScalarRange);
+    float nodes[vtkTiledRayCastGradientOpacityNodes::MaximumNodes][2];
+    for (int i = 0; i < gradientOpacity.NumberOfNodes; ++i)
+    {
+      nodes[i][0] = static_cast<float>(gradientOpacity.Nodes[i][0] * scale);
+      nodes[i][1] = gradientOpacity.Nodes[i][1];
+    }
+    p->SetUniform2fv("in_gradientOpacity", gradientOpacity.NumberOfNodes, nodes[0]);
     p->SetUniformi("in_gradientOpacityClamping", gradientOpacity.Clamping);
   }
   if (!lighting.Enabled)
@@ -140,8 +153,9 @@ void vtkTiledRayCastUniforms::SetShadingUniforms(vtkShaderProgram* p)
 void vtkTiledRayCastUniforms::SetIntegrationUniforms(vtkShaderProgram* p)
 {
   const int mode = this->Part.Integration->GetMode(this->Part.Mapper);
-  this->Part.Integration->SetUniforms(
-    p, mode, vtkTetMesh::ComputeScalarShift(this->Part.Mesh->ScalarRange));
+  this->Part.Integration->SetUniforms(p, mode,
+    vtkTetMesh::ComputeScalarShift(this->Part.Mesh->ScalarRange),
+    vtkTetMesh::ComputeScalarScale(this->Part.Mesh->ScalarRange));
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION &&
     this->Part.Mapper->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND)
   {

@@ -9,7 +9,7 @@ leaves the statistics saying nothing was rendered.
 import unittest
 
 from vtkmodules.vtkCommonCore import vtkCommand, vtkFloatArray, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkImageData, vtkUnstructuredGrid
+from vtkmodules.vtkCommonDataModel import vtkImageData, vtkPiecewiseFunction, vtkUnstructuredGrid
 from vtkmodules.vtkFiltersGeneral import vtkMultiBlockDataGroupFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (OpenGL implementations)
 
@@ -27,6 +27,33 @@ def spx_property(grid):
     """The ramps above, a unit distance of a tenth of the mesh's size."""
     return volume_property(grid.GetPointData().GetScalars().GetRange(), SPX_COLORS,
                            SPX_OPACITIES, 0.1 * grid.GetLength())
+
+
+def against_reference(mapper, grid, prop, volume, renderer, window):
+    """RMSE and largest difference (1/255) of the window's image against the exact reference of
+    the same scene (the mapper's scalar selection, blend mode and the scene's depth)."""
+    size = window.GetSize()[0]
+    pixels = vtkUnsignedCharArray()
+    window.GetPixelData(0, 0, size - 1, size - 1, 0, pixels, 0)
+    depth = vtkFloatArray()
+    window.GetZbufferData(0, 0, size - 1, size - 1, depth)
+    reference = vtkTetReferenceRenderer()
+    reference.SetInputData(grid)
+    reference.GetScalarSelection().CopySettings(mapper.GetScalarSelection())
+    reference.SetBlendMode(mapper.GetBlendMode())
+    reference.SetVolumeProperty(prop)
+    reference.SetCamera(renderer.GetActiveCamera())
+    reference.SetImageSize(size, size)
+    reference.SetVolume(volume)
+    reference.SetOpaqueDepth(depth)
+    reference.Render()
+    image = vtkImageData()
+    reference.ConvertToUnsignedChar(reference.GetOutput(), renderer.GetBackground(), image)
+    exact = image.GetPointData().GetScalars()
+    n = pixels.GetNumberOfValues()
+    assert n == exact.GetNumberOfValues()
+    diffs = [abs(pixels.GetValue(i) - exact.GetValue(i)) for i in range(n)]
+    return (sum(d * d for d in diffs) / n) ** 0.5, max(diffs)
 
 
 class TestTiledRayCastPython(unittest.TestCase):
@@ -68,28 +95,75 @@ class TestTiledRayCastPython(unittest.TestCase):
         self.assertEqual(mapper.GetValidationReport().GetNumberOfTetrahedra(),
                          grid.GetNumberOfCells())
 
-        pixels = vtkUnsignedCharArray()
-        window.GetPixelData(0, 0, SIZE - 1, SIZE - 1, 0, pixels, 0)
-        depth = vtkFloatArray()
-        window.GetZbufferData(0, 0, SIZE - 1, SIZE - 1, depth)
-        reference = vtkTetReferenceRenderer()
-        reference.SetInputData(grid)
-        reference.SetVolumeProperty(prop)
-        reference.SetCamera(renderer.GetActiveCamera())
-        reference.SetImageSize(SIZE, SIZE)
-        reference.SetVolume(volume)
-        reference.SetOpaqueDepth(depth)
-        reference.Render()
-        image = vtkImageData()
-        reference.ConvertToUnsignedChar(reference.GetOutput(), renderer.GetBackground(), image)
-        exact = image.GetPointData().GetScalars()
-        n = pixels.GetNumberOfValues()
-        self.assertEqual(n, exact.GetNumberOfValues())
-        diffs = [abs(pixels.GetValue(i) - exact.GetValue(i)) for i in range(n)]
-        rmse = (sum(d * d for d in diffs) / n) ** 0.5
-        print("ours vs exact reference (1/255): RMSE %.3f, max %d" % (rmse, max(diffs)))
+        rmse, worst = against_reference(mapper, grid, prop, volume, renderer, window)
+        print("ours vs exact reference (1/255): RMSE %.3f, max %d" % (rmse, worst))
         self.assertLessEqual(rmse, 0.75)
-        self.assertLessEqual(max(diffs), 2)
+        self.assertLessEqual(worst, 2)
+
+    def test_scalars_spanning_the_float_range(self):
+        """Finite float scalars from -3e38 to 3e38: their differences overflow float, so the GPU
+        works in scaled units (vtkTetMesh::GetScalarScale). Every pipeline, layout and
+        integration, cell scalars, a blend mode and gradient opacity against the reference (before
+        the scale: RMSE 16/255 and 8,592 values off by more than 32 on the blunt fin)."""
+        grid = read_mesh(SPX)
+        source = grid.GetPointData().GetScalars()
+        lo, hi = source.GetRange()
+        huge = vtkFloatArray()
+        huge.SetName("huge")
+        huge.SetNumberOfTuples(source.GetNumberOfTuples())
+        for i in range(source.GetNumberOfTuples()):
+            huge.SetValue(i, 3e38 * (2.0 * (source.GetValue(i) - lo) / (hi - lo) - 1.0))
+        grid.GetPointData().SetScalars(huge)
+        cells = vtkFloatArray()
+        cells.SetName("huge cells")
+        cells.SetNumberOfTuples(grid.GetNumberOfCells())
+        for c in range(grid.GetNumberOfCells()):
+            cells.SetValue(c, -3e38 + 6e38 * c / grid.GetNumberOfCells())
+        grid.GetCellData().AddArray(cells)
+
+        def cell_scalars(m):
+            m.SetScalarModeToUseCellFieldData()
+            m.SelectScalarArray("huge cells")
+
+        def gradient_opacity(m, p):
+            # From 0.1 to 1 over the gradients of a ramp across the mesh (about 6e38 / size).
+            g = vtkPiecewiseFunction()
+            g.AddPoint(0.0, 0.1)
+            g.AddPoint(2.0 * 6e38 / grid.GetLength(), 1.0)
+            p.SetGradientOpacity(g)
+
+        cases = [
+            ("compute, automatic", lambda m: None),
+            ("compute, partial", lambda m: m.SetIntegrationModeToPartialPreIntegration()),
+            ("compute, 2D table", lambda m: m.SetIntegrationModeToPreIntegration2D()),
+            ("fragment", lambda m: m.SetPipelineToFragment()),
+            ("paper layout", lambda m: m.SetMeshLayoutToPaper()),
+            ("cell scalars", cell_scalars),
+            ("maximum intensity", lambda m: m.SetBlendModeToMaximumIntensity()),
+            ("gradient opacity", None),
+        ]
+        for label, configure in cases:
+            with self.subTest(label):
+                data_range = cells.GetRange() if configure is cell_scalars else huge.GetRange()
+                prop = volume_property(data_range, SPX_COLORS, SPX_OPACITIES,
+                                       0.1 * grid.GetLength())
+                mapper = vtkTiledRayCastVolumeMapper()
+                mapper.SetInputData(grid)
+                if configure is None:
+                    gradient_opacity(mapper, prop)
+                else:
+                    configure(mapper)
+                volume, renderer, window = offscreen_window(mapper, prop, SIZE, multisamples=0)
+                renderer.SetBackground(26 / 255.0, 26 / 255.0, 38 / 255.0)
+                renderer.GetActiveCamera().Azimuth(20)
+                renderer.GetActiveCamera().Elevation(30)
+                renderer.ResetCameraClippingRange()
+                window.Render()
+                self.assertTrue(mapper.GetStatistics().GetRendered())
+                rmse, worst = against_reference(mapper, grid, prop, volume, renderer, window)
+                print("%s: RMSE %.3f, max %d" % (label, rmse, worst))
+                self.assertLessEqual(rmse, 0.75)
+                self.assertLessEqual(worst, 2)
 
     def test_composite_input_through_a_pipeline(self):
         """A multiblock from a pipeline (a reader's output port would do the same): rendered
