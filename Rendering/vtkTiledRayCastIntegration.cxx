@@ -48,7 +48,7 @@ int vtkTiledRayCastIntegration::GetMode(vtkTiledRayCastVolumeMapper* mapper) con
   const int mode = mapper->GetIntegrationMode();
   if (mode != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
   {
-    return mode;
+    return this->TableTooCoarse ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION : mode;
   }
   return this->ForcePartial ? vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION
                             : this->AutomaticMode;
@@ -85,6 +85,7 @@ bool vtkTiledRayCastIntegration::Update(
     this->ChooseIntegration(frame, property);
   }
 
+  this->UpdateExplicitTable(frame, property);
   vtkIdType uploaded = 0;
   const int mode = this->GetMode(self);
   stats->SetIntegrationMode(mode);
@@ -104,13 +105,7 @@ bool vtkTiledRayCastIntegration::Update(
     // A table of the whole transfer function, at the resolution it needs, within the GPU's
     // limits; rebuilt only when the transfer function, the lengths or the mode changed.
     vtkTiledRayCastPreIntegrationTable* table = this->Table;
-    if (self->GetIntegrationMode() != vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION)
-    {
-      vtkTiledRayCastAutomaticIntegration::Configure(
-        table, this->TableSettings(frame, false), mode);
-      table->Update(property, this->TransferFunction, frame.ScalarRange);
-    }
-    if (!this->Textures.UpdateTable(window, table, mode, self, uploaded, error))
+    if (!this->Textures.UpdateTable(window, table, mode, uploaded, error))
     {
       return false;
     }
@@ -124,6 +119,46 @@ bool vtkTiledRayCastIntegration::Update(
   stats->SetNumberOfTransferFunctionNodes(this->TransferFunction->GetNumberOfNodes());
   stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
   return true;
+}
+
+//------------------------------------------------------------------------------
+// An explicit table mode's table (the automatic mode's comes with its choice), and whether the
+// budget cut it: then partial pre-integration draws instead, and the mapper says so once per
+// table configuration.
+void vtkTiledRayCastIntegration::UpdateExplicitTable(
+  const Frame& frame, vtkVolumeProperty* property)
+{
+  vtkTiledRayCastVolumeMapper* self = frame.Mapper;
+  const int requested = self->GetIntegrationMode();
+  this->TableTooCoarse = false;
+  if (self->GetBlendMode() != vtkVolumeMapper::COMPOSITE_BLEND ||
+    (requested != vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D &&
+      requested != vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_3D))
+  {
+    return;
+  }
+  vtkTiledRayCastPreIntegrationTable* table = this->Table;
+  vtkTiledRayCastAutomaticIntegration::Configure(
+    table, this->TableSettings(frame, false), requested);
+  table->Update(property, this->TransferFunction, frame.ScalarRange);
+  const int reducedFrom = table->GetReducedFromScalarSize();
+  this->TableTooCoarse = reducedFrom > 0;
+  if (!this->TableTooCoarse || this->WarnedTooCoarseTable == table->GetMTime())
+  {
+    return;
+  }
+  this->WarnedTooCoarseTable = table->GetMTime();
+  int size[3];
+  table->GetSize(size);
+  vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
+                                  << "D pre-integration table of this transfer function would "
+                                     "take more than "
+                                  << table->GetBuildTimeBudget() << " s to build at " << reducedFrom
+                                  << " scalar steps; cut to the " << size[0]
+                                  << " that fit the budget, it would be coarser than the "
+                                     "transfer function needs (a feature narrower than a table "
+                                     "step is what makes a build slow): the volume is drawn "
+                                     "with partial pre-integration (exact) instead.");
 }
 
 //------------------------------------------------------------------------------

@@ -78,7 +78,10 @@ public:
   /**
    * The integration the shaders do: the mapper's setting, or partial pre-integration's node
    * list under a blend mode other than compositing (vtkTiledRayCastBlendModes.glsl evaluates
-   * it). AUTOMATIC_INTEGRATION is the mode the automatic choice took.
+   * it). AUTOMATIC_INTEGRATION is the mode the automatic choice took. An explicit table mode
+   * whose table had to be built coarser than asked to keep within its build-time budget
+   * (vtkTiledRayCastPreIntegrationTable::GetReducedFromScalarSize) is drawn with partial
+   * pre-integration, which is exact: such a table cannot hold the feature that made it slow.
    */
   int GetMode(vtkTiledRayCastVolumeMapper* mapper) const;
 
@@ -113,6 +116,7 @@ private:
   // The automatic mode's choice, made again (on a worker thread) when the transfer function,
   // the mesh, the lengths or the budget changed; partial pre-integration until it is made.
   void ChooseIntegration(const Frame& frame, vtkVolumeProperty* property);
+  void UpdateExplicitTable(const Frame& frame, vtkVolumeProperty* property);
   // What a table is built for in this frame: the lengths as they are (explicit table modes),
   // or in steps of 2^(1/8) (`quantized`: the automatic mode's choice and its key).
   static vtkTiledRayCastAutomaticIntegration::Settings TableSettings(
@@ -126,6 +130,8 @@ private:
   vtkTiledRayCastAutomaticIntegration Automatic;
   bool ChoiceMade = false; // since this object exists
   bool ForcePartial = false;
+  bool TableTooCoarse = false;           // an explicit table mode's table, cut by its budget
+  vtkMTimeType WarnedTooCoarseTable = 0; // the table configuration last said so of
   int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
   double PredictedError = 0.0;
   std::vector<double> ChoiceKey;

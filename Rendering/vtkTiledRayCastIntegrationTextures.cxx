@@ -67,8 +67,7 @@ void vtkTiledRayCastIntegrationTextures::UpdateNodes(vtkOpenGLRenderWindow* wind
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* window,
-  vtkTiledRayCastPreIntegrationTable* table, int mode, vtkObject* reporter, vtkIdType& uploaded,
-  std::string& error)
+  vtkTiledRayCastPreIntegrationTable* table, int mode, vtkIdType& uploaded, std::string& error)
 {
   if (table == this->UploadedTable && table->GetMTime() <= this->UploadedTableTime &&
     mode == this->UploadedTableMode)
@@ -77,24 +76,6 @@ bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* wind
   }
   int size[3];
   table->GetSize(size);
-  vtkTiledRayCastVolumeMapper* mapper = vtkTiledRayCastVolumeMapper::SafeDownCast(reporter);
-  const bool automatic =
-    mapper && mapper->GetIntegrationMode() == vtkTiledRayCastVolumeMapper::AUTOMATIC_INTEGRATION;
-  if (table->GetReducedFromScalarSize() > 0 && !automatic)
-  {
-    // Once per build that had to give up resolution (the automatic mode took this table for its
-    // predicted error, coarse or not: normal service).
-    vtkObject* self = reporter;
-    vtkWarningWithObjectMacro(self, << "The " << table->GetDimension()
-                                    << "D pre-integration table of this transfer function "
-                                       "would take more than "
-                                    << table->GetBuildTimeBudget() << " s to build at "
-                                    << table->GetReducedFromScalarSize()
-                                    << " scalar steps: it was built at " << size[0]
-                                    << ", coarser. Partial pre-integration needs no table and is "
-                                       "exact for it; the automatic mode (the default) takes a "
-                                       "table only where its error fits the budget.");
-  }
   vtkTextureObject* tex = this->TableTexture;
   tex->ReleaseGraphicsResources(window);
   tex->SetContext(window);

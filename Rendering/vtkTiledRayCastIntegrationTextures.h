@@ -54,12 +54,13 @@ public:
 
   /**
    * A table mode (vtkTiledRayCastVolumeMapper::PRE_INTEGRATION_2D or _3D): `table`, already
-   * updated, where not on the GPU yet. A table built coarser than asked (its build-time budget)
-   * is reported once per build through `reporter`'s warning. Adds the bytes uploaded to
-   * `uploaded`; false, with `error` set, when the texture cannot be created.
+   * updated, where not on the GPU yet (an explicit mode's table cut by its build-time budget
+   * never comes here: vtkTiledRayCastIntegration draws partial pre-integration instead). Adds
+   * the bytes uploaded to `uploaded`; false, with `error` set, when the texture cannot be
+   * created.
    */
   bool UpdateTable(vtkOpenGLRenderWindow* window, vtkTiledRayCastPreIntegrationTable* table,
-    int mode, vtkObject* reporter, vtkIdType& uploaded, std::string& error);
+    int mode, vtkIdType& uploaded, std::string& error);
 
   /**
    * The textures of `mode`.
