@@ -47,7 +47,6 @@
 
 #include <cmath>   // For std::ldexp, std::ilogb
 #include <cstdint> // For uint32_t
-#include <vector>  // For std::vector
 
 #ifndef __VTK_WRAP__
 #include "vtkSMPTools.h"                      // For vtkSMPTools::Fill in vtkTetMeshWords

@@ -98,22 +98,17 @@ void vtkTetMeshSpatialOrder::ComputeKeys(vtkTetMeshBuildState& state)
   const double* p = mesh->Points.data();
   const uint32_t* tp = mesh->TetPoints.data();
   const MortonGrid grid(mesh->Bounds);
-  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
-  keys.resize(static_cast<size_t>(numTets));
-  vtkSMPTools::For(0, numTets, 16384,
-    [&](vtkIdType begin, vtkIdType end)
+  MakeKeys(state, numTets, 30,
+    [&](vtkIdType t)
     {
-      for (vtkIdType t = begin; t < end; ++t)
+      double centroid[3];
+      for (int c = 0; c < 3; ++c)
       {
-        double centroid[3];
-        for (int c = 0; c < 3; ++c)
-        {
-          centroid[c] = 0.25 *
-            (p[3 * tp[4 * t] + c] + p[3 * tp[4 * t + 1] + c] + p[3 * tp[4 * t + 2] + c] +
-              p[3 * tp[4 * t + 3] + c]);
-        }
-        keys[t] = (grid.Code(centroid) << 30) | static_cast<uint64_t>(t);
+        centroid[c] = 0.25 *
+          (p[3 * tp[4 * t] + c] + p[3 * tp[4 * t + 1] + c] + p[3 * tp[4 * t + 2] + c] +
+            p[3 * tp[4 * t + 3] + c]);
       }
+      return grid.Code(centroid);
     });
 }
 
@@ -129,17 +124,9 @@ void vtkTetMeshSpatialOrder::SortPoints(vtkTetMeshBuildState& state)
   // One key per point: 33 bits of Morton code of its position above its 31-bit id.
   const double* p = mesh->Points.data();
   const MortonGrid grid(mesh->Bounds);
-  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
-  keys.resize(static_cast<size_t>(numPoints));
-  vtkSMPTools::For(0, numPoints, 65536,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        keys[i] = (grid.Code(p + 3 * i) << 31) | static_cast<uint64_t>(i);
-      }
-    });
+  MakeKeys(state, numPoints, 31, [&](vtkIdType i) { return grid.Code(p + 3 * i); });
   SortKeys(state, 31);
+  const vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
 
   // The input id of each new point, the new id of each input point, then the points and the
   // tetrahedra's ids in the new numbering.

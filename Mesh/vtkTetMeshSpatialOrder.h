@@ -20,10 +20,9 @@
 #ifndef vtkTetMeshSpatialOrder_h
 #define vtkTetMeshSpatialOrder_h
 
-#include "vtkSMPTools.h" // For vtkSMPTools in ApplyPointOrder
-#include "vtkTetMesh.h"  // For vtkTetMesh::GetPointInputIds in ApplyPointOrder
-
-class vtkTetMeshBuildState;
+#include "vtkSMPTools.h"          // For vtkSMPTools in ApplyPointOrder and MakeKeys
+#include "vtkTetMesh.h"           // For vtkTetMesh::GetPointInputIds in ApplyPointOrder
+#include "vtkTetMeshBuildState.h" // For vtkTetMeshBuildState::SortKeys in MakeKeys
 
 class vtkTetMeshSpatialOrder
 {
@@ -49,6 +48,14 @@ public:
   static void ApplyPointOrder(const vtkTetMesh* mesh, vtkTetMeshVector<T>& values, int components);
 
   /**
+   * state.SortKeys made for items 0 to n - 1, in parallel: item i's key is code(i) (a
+   * uint64_t of at most 64 - idBits bits) above i in the low `idBits` bits, the form SortKeys
+   * sorts (the Morton orders, the duplicate-point search's hash).
+   */
+  template <typename Code>
+  static void MakeKeys(vtkTetMeshBuildState& state, vtkIdType n, int idBits, Code code);
+
+  /**
    * state.SortKeys sorted by their 33 bits above the low `idBits` (those above bit 63 are
    * none): three counting passes of 11 bits, each in parallel by blocks, stable (ties keep
    * their order) and the same result on any number of threads.
@@ -58,6 +65,23 @@ public:
 private:
   static void ComputeKeys(vtkTetMeshBuildState& state);
 };
+
+//------------------------------------------------------------------------------
+template <typename Code>
+void vtkTetMeshSpatialOrder::MakeKeys(
+  vtkTetMeshBuildState& state, vtkIdType n, int idBits, Code code)
+{
+  vtkTetMeshVector<uint64_t>& keys = state.SortKeys;
+  keys.resize(static_cast<size_t>(n));
+  vtkSMPTools::For(0, n, 16384,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        keys[i] = (static_cast<uint64_t>(code(i)) << idBits) | static_cast<uint64_t>(i);
+      }
+    });
+}
 
 //------------------------------------------------------------------------------
 template <typename T>
