@@ -58,8 +58,7 @@ PT = "Projected tetra"
 # 99.9th percentile, max in 1/255.
 ACROSS_RANKS = (0.3, 8.0, 8.0)
 AGAINST_REFERENCE = (0.75, 2.0, 3.0)
-# What pvbatch may print that is not ours: ParaView 5.11's own warning when a plugin overrides a
-# representation's subproxy (TestParaViewPlugin.py), and Open MPI's notice when it runs as root.
+# Warnings pvbatch may print that are not ours: none (TestParaViewPlugin.py).
 KNOWN = single.KNOWN_PARAVIEW_WARNINGS
 
 

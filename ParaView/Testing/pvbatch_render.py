@@ -25,12 +25,9 @@ import time
 from paraview.simple import (
     Calculator,
     Clip,
-    ColorBy,
     Connect,
     ProgrammableFilter,
     RedistributeDataSet,
-    GetColorTransferFunction,
-    GetOpacityTransferFunction,
     GetSettingsProxy,
     GetActiveViewOrCreate,
     Hide,
@@ -38,7 +35,6 @@ from paraview.simple import (
     Render,
     SaveData,
     SaveScreenshot,
-    Show,
     Tetrahedralize,
     Wavelet,
     XMLPartitionedUnstructuredGridReader,
@@ -46,6 +42,8 @@ from paraview.simple import (
 )
 from paraview import servermanager
 from paraview.modules.vtkRemotingCore import vtkProcessModule
+
+from paraview_scene import describe, first_varying_array, mapper_statistics, show_volume
 
 parser = argparse.ArgumentParser()
 parser.add_argument("--plugin", required=True)
@@ -161,22 +159,8 @@ if args.mesh.startswith("wavelet:") and ranks == 1:
     # The whole generated mesh, for the reference outside ParaView.
     SaveData(args.output + "_tets.vtu", proxy=source)
 
-
-def first_varying_array(proxy):
-    """The first point array whose values vary: a constant one (post_tets6's Density) would
-    make the default opacity ramp zero everywhere, an empty image."""
-    for name in proxy.PointData.keys():
-        lo, hi = proxy.PointData[name].GetRange(-1)
-        if hi > lo:
-            return name
-    return proxy.PointData.keys()[0]
-
-
 array = args.array or ("vec" if args.mesh == "mixed" else first_varying_array(source))
 component = 1 if args.mesh == "mixed" else -1  # the Y component of "vec", or the magnitude
-lo, hi = source.PointData[array].GetRange(component)
-b = info.GetBounds()
-diagonal = ((b[1] - b[0]) ** 2 + (b[3] - b[2]) ** 2 + (b[5] - b[4]) ** 2) ** 0.5
 
 view = GetActiveViewOrCreate("RenderView")
 view.ViewSize = [args.size, args.size]
@@ -189,24 +173,12 @@ if args.connect:
 if hasattr(view, "UseColorPaletteForBackground"):
     view.UseColorPaletteForBackground = 0
 view.Background = [float(c) for c in args.background.split(",")]
-display = Show(source, view)
-display.SetRepresentationType("Volume")
-if component >= 0:
-    ColorBy(display, ("POINTS", array, "XYZ"[component]))
-else:
-    ColorBy(display, ("POINTS", array))
-lut = GetColorTransferFunction(array)
-lut.RescaleTransferFunction(lo, hi)
-if args.smooth:
-    lut.Discretize = 0
-opacity = GetOpacityTransferFunction(array)
-opacity.RescaleTransferFunction(lo, hi)
-display.SelectMapper = args.mapper
+display, lut, opacity, value_range = show_volume(
+    source, view, array, component, args.mapper, args.unit_fraction, args.smooth)
 display.UseDataPartitions = 1 if args.use_data_partitions else 0
 display.TiledRayCastSplitBoundaryCells = args.split_boundary_cells
 if args.synchronous_statistics:
     display.TiledRayCastSynchronousStatistics = 1
-display.ScalarOpacityUnitDistance = args.unit_fraction * diagonal
 
 view.ResetCamera()
 camera = view.GetActiveCamera()
@@ -218,24 +190,17 @@ view.ResetCamera()
 start = time.perf_counter()
 Render(view)
 first = time.perf_counter() - start
-camera_state = {
-    "position": list(camera.GetPosition()),
-    "focal_point": list(camera.GetFocalPoint()),
-    "view_up": list(camera.GetViewUp()),
-    "view_angle": camera.GetViewAngle(),
-    "clipping_range": list(camera.GetClippingRange()),
-}
 SaveScreenshot(args.output + ".png", view, ImageResolution=[args.size, args.size],
                TransparentBackground=0)
+reference_scene = describe(view, display, array, value_range, lut, opacity, args.size)
 
 if args.empty_view:
     Hide(source, view)
-def mapper_statistics():
+
+
+def statistics_of_last_frame():
     """Our mapper's summary of the frame just drawn (rank 0's), or None."""
-    if args.empty_view or not display.SMProxy.GetProperty("TiledRayCastStatistics"):
-        return None
-    display.SMProxy.UpdatePropertyInformation()
-    return display.SMProxy.GetProperty("TiledRayCastStatistics").GetElement(0)
+    return None if args.empty_view else mapper_statistics(display)
 
 
 times = []
@@ -246,7 +211,7 @@ for _ in range(args.frames):
     Render(view)
     times.append(time.perf_counter() - start)
     # Read after the clock stopped: what each timed frame did, for the slow ones.
-    frame_statistics.append(mapper_statistics())
+    frame_statistics.append(statistics_of_last_frame())
 
 redistribution_s = None
 if args.time_redistribution and ranks > 1:
@@ -262,40 +227,12 @@ if args.time_redistribution and ranks > 1:
     redistributed.UpdatePipeline()
     redistribution_s = time.perf_counter() - start
 
-statistics = mapper_statistics()
-
-# The colour map as ParaView evaluates it (the client-side object is the one rendered in a
-# built-in session), sampled at the centre of each step, so the reference can check its own.
-ctf = lut.GetClientSideObject()
-steps = int(lut.NumberOfTableValues)
-samples = []
-for k in range(steps):
-    s = lo + (hi - lo) * (k + 0.5) / steps
-    rgb = [0.0, 0.0, 0.0]
-    ctf.GetColor(s, rgb)
-    samples.append([s] + rgb)
+statistics = statistics_of_last_frame()
 
 result = {
     "mesh": args.mesh,
     "mapper": args.mapper,
-    "array": array,
-    "range": [lo, hi],
     "cell_types": sorted(types) if types is not None else None,
-    "size": args.size,
-    "background": list(view.Background),
-    "camera": camera_state,
-    "unit_distance": display.ScalarOpacityUnitDistance,
-    "colors": {
-        "rgb_points": list(lut.RGBPoints),
-        "color_space": lut.GetProperty("ColorSpace").GetData(),
-        "discretize": int(lut.Discretize),
-        "number_of_values": steps,
-        "samples": samples,
-        "class": ctf.GetClassName(),
-    },
-    "vector_mode": lut.GetProperty("VectorMode").GetData(),
-    "vector_component": int(lut.VectorComponent),
-    "opacity_points": list(opacity.Points),
     "ranks": ranks,
     "ranks_cells": ranks_cells,
     "cells": info.GetNumberOfCells(),
@@ -309,6 +246,8 @@ result = {
     "statistics": statistics,
     "frame_statistics": frame_statistics,
 }
+# Described after the first frame, whose camera the screenshot has.
+result.update(reference_scene)
 with open(args.output + ".json", "w") as f:
     json.dump(result, f, indent=1)
 print("rendered %s with %s on %d rank(s): first frame %.3f s%s" % (args.mesh, args.mapper, ranks, first,

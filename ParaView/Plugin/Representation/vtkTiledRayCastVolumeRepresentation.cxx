@@ -18,6 +18,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkScalarsToColors.h"
 #include "vtkTiledRayCastStatistics.h"
+#include "vtkTiledRayCastVolumeSubProxyOverride.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolumeProperty.h"
 #include "vtkVolumeRepresentationPreprocessor.h"
@@ -44,6 +45,12 @@ vtkTiledRayCastVolumeRepresentation::vtkTiledRayCastVolumeRepresentation()
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastVolumeRepresentation::~vtkTiledRayCastVolumeRepresentation() = default;
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastVolumeRepresentation::InitializeProcess()
+{
+  vtkTiledRayCastVolumeSubProxyOverride::Install();
+}
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastVolumeRepresentation::SetTiledRayCastIntegrationMode(int mode)

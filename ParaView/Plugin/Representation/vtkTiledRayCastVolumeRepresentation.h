@@ -47,6 +47,14 @@ public:
    */
   static const char* GetTiledRayCastMapperName() { return "Tiled ray cast"; }
 
+  /**
+   * Makes this class ParaView's Volume representation of unstructured grids in every proxy
+   * definition manager of the process, without ParaView creating its own first and replacing it
+   * (which makes ParaView 5.11 print twelve deprecation warnings per representation). The
+   * plugin calls it when it is loaded; see vtkTiledRayCastVolumeSubProxyOverride.
+   */
+  static void InitializeProcess();
+
   ///@{
   /**
    * Settings of the tiled ray-cast mapper (see vtkTiledRayCastVolumeMapper): integration mode,
