@@ -27,8 +27,8 @@ constexpr int NumberOfSegments = 4096;
 constexpr int NumberOfRays = 512;
 constexpr double SafetyFactor = 2.0;
 
-// A table as the shaders read it: (mean colour, optical depth) entries, interpolated
-// bilinearly (2D) or trilinearly (3D) between grid points.
+// A table as the shaders read it: (mean colour, optical depth per unit length) entries,
+// interpolated bilinearly (2D) or trilinearly (3D) between grid points.
 class TableReader
 {
 public:
@@ -104,23 +104,25 @@ public:
       {
         const auto piece =
           this->Lookup(sf + (sb - sf) * k / parts, sf + (sb - sf) * (k + 1) / parts, lengthGrid);
-        Over(piece, 1 - std::exp(-piece[3]), rgba);
+        Over(piece, 1 - std::exp(-std::min(piece[3] * part, 80.0)), rgba);
       }
       return;
     }
     // 2D: one lookup at the reference length, split where the segment is optically thick.
-    double ratio = d / this->Table->GetReferenceLength();
+    const double ratio = d / this->Table->GetReferenceLength();
     auto piece = this->Lookup(sf, sb, 0);
-    const int parts = std::min(std::max(1, static_cast<int>(std::ceil(piece[3] * ratio / 0.5))),
-      std::max(1, static_cast<int>(std::ceil(ratio))));
-    ratio /= parts;
+    const double depth = piece[3] * d;
+    // Clamped as doubles: a near-opaque segment's depth is far beyond any int.
+    const int parts = static_cast<int>(
+      std::min(std::max(1.0, std::ceil(depth / 0.5)), std::max(1.0, std::ceil(ratio))));
+    const double part = d / parts;
     for (int k = 0; k < parts; ++k)
     {
       if (parts > 1)
       {
         piece = this->Lookup(sf + (sb - sf) * k / parts, sf + (sb - sf) * (k + 1) / parts, 0);
       }
-      Over(piece, 1 - std::exp(-piece[3] * ratio), rgba);
+      Over(piece, 1 - std::exp(-std::min(piece[3] * part, 80.0)), rgba);
     }
   }
 

@@ -23,6 +23,32 @@
 #include <algorithm>
 #include <cmath>
 
+namespace
+{
+// Entries' optical depth per unit length at most this: any segment longer than 1e-28 world
+// units is then opaque (alpha = 1 - exp(-80) and beyond), and the texture holds no infinity
+// (which trilinear filtering would turn into NaN next to a zero weight).
+constexpr double MaximumExtinction = 1e30;
+
+// The optical depth per unit length of segments from sf to sb, from lengths below `length`
+// until the integrator gives a finite depth: for a medium so opaque that even the table's
+// lengths reach its cut-off. MaximumExtinction where no length does (an opacity of 1).
+double OpticalDepthPerLength(vtkTetRayIntegrator* integrator, double sf, double sb, double length)
+{
+  double rgba[4];
+  for (double probe = length > 0.0 ? length * 1e-3 : 1.0; probe > 1e-290; probe *= 1e-3)
+  {
+    double depth = 0.0;
+    integrator->IntegrateWithDepth(sf, sb, probe, rgba, &depth);
+    if (std::isfinite(depth))
+    {
+      return std::min(depth / probe, MaximumExtinction);
+    }
+  }
+  return MaximumExtinction;
+}
+}
+
 vtkStandardNewMacro(vtkTiledRayCastPreIntegrationTable);
 
 //------------------------------------------------------------------------------
@@ -141,11 +167,19 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
         const double sb = lo + width * back / (n - 1);
         double shortMean[3];
         bool haveShortMean = false;
+        // The optical depth per unit length of the segments from sf to sb, the same at every
+        // length (D = L Int_0^1 tau(sf + (sb - sf) u) du): from the first length whose depth
+        // the integrator gives (it says +inf past its cut-off, where alpha is 1 in double).
+        double extinction = -1.0;
         for (int l = 0; l < nl; ++l)
         {
           const double length = is3D ? maxLength * l / (nl - 1) : reference;
           double depth = 0.0;
           integrator->IntegrateWithDepth(sf, sb, length, rgba, &depth);
+          if (extinction < 0.0 && length > 0.0 && std::isfinite(depth))
+          {
+            extinction = std::min(depth / length, MaximumExtinction);
+          }
           float* entry = table + 4 * ((static_cast<size_t>(l) * n + back) * n + front);
           // Relative to the colour's own rounding: below this alpha the mean colour is the
           // short-segment limit (alpha 0 at length 0, or no opacity at all).
@@ -168,9 +202,15 @@ bool vtkTiledRayCastPreIntegrationTable::Update(vtkVolumeProperty* property,
               entry[c] = static_cast<float>(shortMean[c]);
             }
           }
-          // Beyond an optical depth of 80 alpha is 1 in double: the cap keeps the texture finite
-          // (the integrator says +inf where the transmittance underflowed).
-          entry[3] = static_cast<float>(std::min(depth, 80.0));
+        }
+        if (extinction < 0.0)
+        {
+          extinction = OpticalDepthPerLength(integrator, sf, sb, is3D ? maxLength : reference);
+        }
+        for (int l = 0; l < nl; ++l)
+        {
+          table[4 * ((static_cast<size_t>(l) * n + back) * n + front) + 3] =
+            static_cast<float>(extinction);
         }
       }
     });

@@ -18,14 +18,19 @@
  * (vtkTetRayIntegrator), in parallel; the GPU interpolates between entries, which is where the
  * error of these modes comes from.
  *
- * An entry holds the segment's optical depth D (alpha = 1 - exp(-D)) and its mean colour, the
- * premultiplied colour divided by alpha, not the premultiplied colour and alpha themselves: D is
- * linear in the length for given scalars, so interpolation along the length axis is exact for
- * it, and it does not saturate where alpha does (a near-opaque segment's alpha is 1 to float
- * precision at every length but the shortest: interpolated alpha was up to 89/255 off on meshes
- * of near-opaque tets, and the 2D table's opacity correction, which read D back from alpha,
- * 181/255). Where alpha is 0 the mean colour is its limit for short segments (the colour function
- * at the middle of the scalars where the opacity is 0 throughout).
+ * An entry holds the segment's mean colour, the premultiplied colour divided by alpha, and its
+ * optical depth per unit length E (alpha = 1 - exp(-E L) for a segment of length L), not the
+ * premultiplied colour and alpha themselves. E is the same at every length for given scalars
+ * (D = L Int_0^1 tau(sf + (sb - sf) u) du), so it is exact along the length axis and for every
+ * segment shorter than the table's first length, and it does not saturate where alpha does (a
+ * near-opaque segment's alpha is 1 to float precision at every length but the shortest:
+ * interpolated alpha was up to 89/255 off on meshes of near-opaque tets, and the 2D table's
+ * opacity correction, which read D back from alpha, 181/255). It is not capped where alpha is 1
+ * either: the optical depth itself, capped at 80 as it once was, made a segment shorter than
+ * 1/80 of the table's first length (a ray grazing the mesh's silhouette) up to 206/255 too
+ * transparent under a ScalarOpacityUnitDistance of 1e-12 (issue 28). Where alpha is 0 the mean
+ * colour is its limit for short segments (the colour function at the middle of the scalars where
+ * the opacity is 0 throughout).
  *
  * The resolution along the scalar axes follows the transfer function unless set: grid points
  * at most half the narrowest transfer-function feature apart over the data's scalar range,

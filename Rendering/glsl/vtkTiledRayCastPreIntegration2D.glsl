@@ -1,10 +1,10 @@
 //============================================================================
 // TiledRayCast: pre-integration with a 2D table of mean colour and optical
-// depth D over (front scalar, back scalar) for one reference length L0. A
-// segment of length d uses alpha' = 1 - exp(-D d / L0) and the mean colour
-// times alpha' (the opacity correction of 2D pre-integration, from D itself:
-// read back from a saturated alpha it was up to 181/255 off on near-opaque
-// tets).
+// depth per unit length E over (front scalar, back scalar) for one reference
+// length L0. A segment of length d uses alpha' = 1 - exp(-E d) and the mean
+// colour times alpha' (the opacity correction of 2D pre-integration, from the
+// depth itself: read back from a saturated alpha it was up to 181/255 off on
+// near-opaque tets).
 // That correction is exact only where the transfer function is constant along
 // the segment; stretched over a long segment whose scalar varies it is far off
 // (a 24-unit slab of optical depth 6: 150/255 for an exact 92). So an
@@ -18,7 +18,8 @@ uniform sampler2D in_preIntegrationTable;
 uniform vec3 in_tableScalarMap;
 uniform float in_tableReferenceLength;
 
-// Mean colour and optical depth of a segment of length L0 from scalar s0 to s1.
+// Mean colour and optical depth per unit length of a segment of length L0 from
+// scalar s0 to s1.
 vec4 trcTableLookup(float s0, float s1)
 {
   float size = in_tableScalarMap.z;
@@ -35,9 +36,10 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
   }
   float ratio = d / in_tableReferenceLength;
   vec4 piece = trcTableLookup(sf, sb);
-  float depth = piece.a * ratio;
-  int parts = clamp(int(ceil(depth / 0.5)), 1, max(int(ceil(ratio)), 1));
-  ratio /= float(parts);
+  float depth = piece.a * d;
+  // Clamped as floats: a near-opaque segment's depth is far beyond any int.
+  int parts = int(clamp(ceil(depth / 0.5), 1.0, max(ceil(ratio), 1.0)));
+  float partLength = d / float(parts);
   for (int k = 0; k < parts; ++k)
   {
     if (parts > 1)
@@ -45,7 +47,8 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
       piece = trcTableLookup(
         mix(sf, sb, float(k) / float(parts)), mix(sf, sb, float(k + 1) / float(parts)));
     }
-    float alpha = 1.0 - exp(-piece.a * ratio);
+    // Beyond an optical depth of 80 alpha is 1 in float; the cap keeps the product finite.
+    float alpha = 1.0 - exp(-min(piece.a * partLength, 80.0));
     color.rgb += (1.0 - color.a) * alpha * piece.rgb;
     color.a += (1.0 - color.a) * alpha;
     if (color.a >= in_earlyTerminationOpacity)

@@ -1,8 +1,9 @@
 //============================================================================
 // TiledRayCast: full pre-integration with a 3D table of mean colour and
-// optical depth over (front scalar, back scalar, length), computed exactly on
-// the CPU at the table's grid points and read with trilinear filtering (the
-// depth is linear in the length: exact along that axis, and it never saturates
+// optical depth per unit length over (front scalar, back scalar, length),
+// computed exactly on the CPU at the table's grid points and read with
+// trilinear filtering (the depth per unit length is the same at every length:
+// exact along that axis and for the shortest segments, and it never saturates
 // as alpha does; vtkTiledRayCastPreIntegrationTable). Segments longer than the
 // table's longest length are split into equal parts.
 //============================================================================
@@ -31,7 +32,8 @@ void trcIntegrate(float sf, float sb, float d, inout vec4 color)
       clamp((s1 - in_tableScalarMap.x) * in_tableScalarMap.y, 0.0, size - 1.0),
       clamp(partLength * in_tableLengthMap.x, 0.0, lengthSize - 1.0));
     vec4 piece = texture(in_preIntegrationTable, (grid + 0.5) / vec3(size, size, lengthSize));
-    float alpha = 1.0 - exp(-piece.a);
+    // Beyond an optical depth of 80 alpha is 1 in float; the cap keeps the product finite.
+    float alpha = 1.0 - exp(-min(piece.a * partLength, 80.0));
     color.rgb += (1.0 - color.a) * alpha * piece.rgb;
     color.a += (1.0 - color.a) * alpha;
     if (color.a >= in_earlyTerminationOpacity)

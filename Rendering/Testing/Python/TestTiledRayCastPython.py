@@ -132,6 +132,37 @@ class TestTiledRayCastPython(unittest.TestCase):
                 self.assertLessEqual(rmse, 0.75)
                 self.assertLessEqual(worst, 2)
 
+    def test_extreme_scalar_opacity_unit_distance(self):
+        """ScalarOpacityUnitDistance of 1e-12 (every segment opaque but the very shortest) and
+        1e12 (nearly transparent), with each table and the automatic choice, against the exact
+        reference. The tables once held a segment's optical depth capped at 80: a ray grazing the
+        cube's silhouette through a segment shorter than 1/80 of the 3D table's first length came
+        out up to 206/255 too transparent, and the automatic mode chose that table (issue 28
+        item 2); they now hold the optical depth per unit length, exact at every length."""
+        grid = read_mesh("cube_sfepy_200k.vtu")
+        M = vtkTiledRayCastVolumeMapper
+        for unit, mode in ((1e-12, M.AUTOMATIC_INTEGRATION), (1e-12, M.PRE_INTEGRATION_3D),
+                           (1e-12, M.PRE_INTEGRATION_2D), (1e12, M.AUTOMATIC_INTEGRATION)):
+            with self.subTest(unit=unit, mode=mode):
+                prop = volume_property(grid.GetPointData().GetScalars().GetRange(), SPX_COLORS,
+                                       SPX_OPACITIES, unit)
+                mapper = vtkTiledRayCastVolumeMapper()
+                mapper.SetInputData(grid)
+                mapper.SetIntegrationMode(mode)
+                volume, renderer, window = offscreen_window(mapper, prop, SIZE, multisamples=0)
+                renderer.SetBackground(26 / 255.0, 26 / 255.0, 38 / 255.0)
+                camera = renderer.GetActiveCamera()
+                camera.Azimuth(30)
+                camera.Elevation(20)
+                renderer.ResetCamera()
+                window.Render()
+                self.assertTrue(mapper.GetStatistics().GetRendered())
+                rmse, worst = against_reference(mapper, grid, prop, volume, renderer, window)
+                print("unit distance %g, mode %d (drawn with %d): RMSE %.3f, max %d"
+                      % (unit, mode, mapper.GetStatistics().GetIntegrationMode(), rmse, worst))
+                self.assertLessEqual(rmse, 0.75)
+                self.assertLessEqual(worst, 2)
+
     def test_scalars_spanning_the_float_range(self):
         """Finite float scalars from -3e38 to 3e38: their differences overflow float, so the GPU
         works in scaled units (vtkTetMesh::GetScalarScale). Every pipeline, layout and
