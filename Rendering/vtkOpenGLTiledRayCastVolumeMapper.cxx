@@ -566,7 +566,15 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   if (vtkTiledRayCastVolumeGroup::WasDrawn(ren, vol))
   {
-    return; // drawn with the volumes it overlaps, by the first of their mappers
+    return; // drawn with the volumes it overlaps, or in depth order, by another's mapper
+  }
+  // VTK draws volumes in the order they were added: the first of ours draws all of them,
+  // farthest first. (Inside VTK's depth peeling each stage draws each volume between the
+  // stage's depths, in VTK's order.)
+  if (!vtkTiledRayCastVolumetricPeel::FindPass(vol) &&
+    vtkTiledRayCastVolumeGroup::RenderInDepthOrder(ren, this->Impl->FindOurVolumes(ren, vol)))
+  {
+    return;
   }
   this->Timer->StartTimer();
   this->Statistics->ResetFrameCounts();

@@ -28,7 +28,7 @@
 //------------------------------------------------------------------------------
 // Overlapping volumes (vtkTiledRayCastVolumeGroup): what a group needs of this mapper.
 std::vector<vtkTiledRayCastVolumeGroup::Candidate>
-vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtkVolume* vol)
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindOurVolumes(vtkRenderer* ren, vtkVolume* vol)
 {
   // The visible volumes of our mappers in this renderer, in its order (the others' internals
   // are reachable here: they are this class's).
@@ -44,6 +44,14 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtk
       candidates.push_back({ volume, mapper->Impl });
     }
   }
+  return candidates;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkTiledRayCastVolumeGroup::Candidate>
+vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtkVolume* vol)
+{
+  std::vector<vtkTiledRayCastVolumeGroup::Candidate> candidates = this->FindOurVolumes(ren, vol);
   if (candidates.size() < 2)
   {
     return {};

@@ -143,6 +143,9 @@ public:
   void WarnGroupOnce(const std::string& text) override;
   // The group of this mapper's volume in the renderer (itself alone where it overlaps none).
   std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindGroup(vtkRenderer* ren, vtkVolume* vol);
+  // The visible volumes of this module's OpenGL mappers in `ren` (and `vol`), in its order.
+  std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindOurVolumes(
+    vtkRenderer* ren, vtkVolume* vol);
   vtkTiledRayCastShaderComposition::Inputs ProgramInputs(vtkOpenGLRenderWindow* window);
 
   // This frame.

@@ -11,10 +11,13 @@
 #include "vtkTiledRayCastVolumeGroup.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
 #include "vtkCommand.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkRenderer.h"
 #include "vtkTiledRayCastVolumeMapper.h"
+#include "vtkTiledRayCastVolumeOrder.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -58,11 +61,31 @@ void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
   }
 }
 
+// Whether a box (world bounds) lies wholly outside one plane of the view frustum of `matrix`
+// (world to clip coordinates): nothing of it can be seen.
+bool OutsideFrustum(const double bounds[6], vtkMatrix4x4* matrix)
+{
+  int outside[6] = { 0, 0, 0, 0, 0, 0 };
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[4] = { bounds[corner & 1], bounds[2 + ((corner >> 1) & 1)],
+      bounds[4 + ((corner >> 2) & 1)], 1.0 };
+    double c[4];
+    matrix->MultiplyPoint(p, c);
+    for (int k = 0; k < 3; ++k)
+    {
+      outside[2 * k] += c[k] < -c[3] ? 1 : 0;
+      outside[2 * k + 1] += c[k] > c[3] ? 1 : 0;
+    }
+  }
+  return std::find(outside, outside + 6, 8) != outside + 6;
+}
+
 std::string Warning(const std::string& reason)
 {
   return "This volume overlaps another volume of a tiled ray-cast mapper, but " + reason +
-    ": it is drawn on its own, before or after the others in VTK's order, not mixed with them "
-    "where they overlap (docs/mapper.md, \"Overlapping volumes\").";
+    ": it is drawn on its own, before or after the others by the depth of its bounds, not mixed "
+    "with them where they overlap (docs/mapper.md, \"Overlapping volumes\").";
 }
 } // anonymous namespace
 
@@ -284,4 +307,69 @@ bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volu
   auto it = frames.find(renderer);
   return it != frames.end() && it->second.Renderer == renderer &&
     it->second.Drawn.count(volume) > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
+  vtkRenderer* renderer, const std::vector<Candidate>& candidates)
+{
+  // Set while the volumes are drawn: their own Render() draws them the usual way.
+  static bool ordering = false;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  if (ordering || candidates.size() < 2 || !camera)
+  {
+    return false;
+  }
+  vtkMatrix4x4* worldToClip = camera->GetCompositeProjectionTransformMatrix(
+    renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  // What is drawn together: each group of overlapping volumes (as its first volume's mapper
+  // would find it), each other volume alone; with the world bounds of each.
+  std::vector<std::vector<Candidate>> sets;
+  std::vector<vtkTiledRayCastVolumeOrder::Bounds> boxes;
+  std::set<vtkVolume*> placed;
+  for (const Candidate& c : candidates)
+  {
+    if (placed.count(c.Volume))
+    {
+      continue;
+    }
+    std::vector<Candidate> set = Select(candidates, c.Volume);
+    vtkTiledRayCastVolumeOrder::Bounds box = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    for (const Candidate& member : set)
+    {
+      placed.insert(member.Volume);
+      const double* b = member.Volume->GetBounds();
+      for (int k = 0; k < 3; ++k)
+      {
+        box[2 * k] = std::min(box[2 * k], b[2 * k]);
+        box[2 * k + 1] = std::max(box[2 * k + 1], b[2 * k + 1]);
+      }
+    }
+    if (!OutsideFrustum(box.data(), worldToClip))
+    {
+      sets.push_back(set);
+      boxes.push_back(box);
+    }
+  }
+  if (sets.size() < 2)
+  {
+    return false;
+  }
+  ordering = true;
+  for (size_t index : vtkTiledRayCastVolumeOrder::BackToFront(boxes, camera))
+  {
+    // The set's first volume draws its group; a member the group could not take after all
+    // (its frame found shading, say) is drawn right after it, still in the set's turn.
+    for (const Candidate& member : sets[index])
+    {
+      if (!WasDrawn(renderer, member.Volume))
+      {
+        member.Volume->RenderVolumetricGeometry(renderer);
+        MarkDrawn(renderer, member.Volume);
+      }
+    }
+  }
+  ordering = false;
+  return true;
 }

@@ -128,6 +128,18 @@ public:
   static bool WasDrawn(vtkRenderer* renderer, vtkVolume* volume);
 
   /**
+   * Draws every volume of `candidates` (the visible volumes of our mappers in `renderer`, the
+   * one whose mapper VTK calls first among them) in depth order, farthest first
+   * (vtkTiledRayCastVolumeOrder): each group of overlapping volumes as one, in one traversal, and
+   * each other volume alone, all through vtkVolume::RenderVolumetricGeometry as VTK would draw
+   * them, then marks them drawn for this frame. Volumes wholly outside the camera's frustum are
+   * left to VTK (which culls them). True when it drew them; false, to draw only the calling
+   * volume as usual, when there is nothing to order (fewer than two volumes) or when called
+   * again from a volume it is drawing.
+   */
+  static bool RenderInDepthOrder(vtkRenderer* renderer, const std::vector<Candidate>& candidates);
+
+  /**
    * Why `mapper`'s `volume` cannot be traversed with others (a phrase), or empty: the mapper's
    * settings, whether its context lacks compute shaders, and whether its frame found shading
    * or gradient opacity in force.
