@@ -44,6 +44,7 @@ void vtkTetMesh::Initialize()
   const double empty[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   std::memcpy(this->Bounds, empty, sizeof(empty));
   this->Shift[0] = this->Shift[1] = this->Shift[2] = 0.0;
+  this->LongestEdge = 0.0;
   this->Report->Reset();
   this->TopologyTime.Modified();
   this->PointsTime.Modified();

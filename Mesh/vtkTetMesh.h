@@ -205,6 +205,13 @@ public:
   void GetBounds(double bounds[6]) const;
 
   /**
+   * The longest edge of any tetrahedron (its length in the mesh's coordinates): the longest
+   * segment a ray can have inside one. Measured by the orientation pass of every build, the
+   * points-only ones included (an upper bound where a later stage left tetrahedra out).
+   */
+  double GetLongestEdge() const { return this->LongestEdge; }
+
+  /**
    * The centre of the bounds. GPU layouts store coordinates relative to it in single
    * precision; scalar gradients and offsets (ComputeScalarGradient()) are also expressed in
    * these shifted coordinates.
@@ -405,6 +412,7 @@ protected:
   double ScalarRange[2] = { 0.0, 0.0 };
   double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   double Shift[3] = { 0.0, 0.0, 0.0 };
+  double LongestEdge = 0.0;
   vtkNew<vtkTetMeshValidationReport> Report;
   vtkTimeStamp TopologyTime;
   vtkTimeStamp PointsTime;

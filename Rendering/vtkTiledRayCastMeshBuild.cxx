@@ -12,9 +12,6 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkDataSet.h"
-#include "vtkMath.h"
-#include "vtkSMPThreadLocal.h"
-#include "vtkSMPTools.h"
 #include "vtkTetMesh.h"
 #include "vtkTetMeshBuilder.h"
 #include "vtkTetMeshCompactLayout.h"
@@ -28,40 +25,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-namespace
-{
-// The longest edge of any tetrahedron: the longest segment a ray can have inside one.
-double ComputeLongestEdge(vtkTetMesh* mesh)
-{
-  const double* points = mesh->GetPoints();
-  const uint32_t* tets = mesh->GetTetPoints();
-  vtkSMPThreadLocal<double> longest(0.0);
-  vtkSMPTools::For(0, mesh->GetNumberOfTetrahedra(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double& local = longest.Local();
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const uint32_t* ids = tets + 4 * t;
-        for (int i = 0; i < 4; ++i)
-        {
-          for (int j = i + 1; j < 4; ++j)
-          {
-            local = std::max(
-              local, vtkMath::Distance2BetweenPoints(points + 3 * ids[i], points + 3 * ids[j]));
-          }
-        }
-      }
-    });
-  double result = 0.0;
-  for (double v : longest)
-  {
-    result = std::max(result, v);
-  }
-  return std::sqrt(result);
-}
-} // anonymous namespace
 
 //------------------------------------------------------------------------------
 vtkTiledRayCastMeshBuild::vtkTiledRayCastMeshBuild(vtkTiledRayCastVolumeMapper* mapper)
@@ -122,8 +85,12 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   // What cannot fit on the GPU is refused before it is built, where the input's counts tell;
   // an input found to fit is not checked again until it (or the user's limit) changes.
   const bool paper = self->GetMeshLayout() == vtkTiledRayCastVolumeMapper::PAPER_LAYOUT;
-  const bool checkBudget = input != this->BudgetInput ||
-    input->GetMTime() != this->BudgetInputTime || budget.GetUserLimit() != this->BudgetUserLimit;
+  // Keyed on the topology's arrays, not the input's time: a deforming mesh changes only its points.
+  std::vector<vtkTetMeshBuildState::Stamp> topology;
+  vtkTetMeshBuildState::GetTopologyStamps(input, topology);
+  const bool checkBudget = input != this->BudgetInput || topology != this->BudgetTopology ||
+    input->GetNumberOfPoints() != this->BudgetPoints ||
+    budget.GetUserLimit() != this->BudgetUserLimit;
   this->BudgetInput = nullptr;
   std::string budgetError;
   if (checkBudget && !budget.CheckInput(input, paper, budgetError))
@@ -219,7 +186,8 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
     return false;
   }
   this->BudgetInput = input;
-  this->BudgetInputTime = input->GetMTime();
+  this->BudgetTopology = topology;
+  this->BudgetPoints = input->GetNumberOfPoints();
   this->BudgetUserLimit = budget.GetUserLimit();
   timer->StopTimer();
   self->GetStatistics()->SetMeshBuildTime(timer->GetElapsedTime());
@@ -241,7 +209,7 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
       this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
     }
     mesh->GetScalarRange(this->ScalarRange);
-    this->LongestEdge = ComputeLongestEdge(mesh);
+    this->LongestEdge = mesh->GetLongestEdge();
     const double volume =
       (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
     // The edge of a regular tetrahedron of the mean volume: a typical segment length.

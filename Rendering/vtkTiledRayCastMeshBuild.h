@@ -29,10 +29,12 @@
 
 #include "vtkNew.h"                   // For vtkNew
 #include "vtkSmartPointer.h"          // For vtkSmartPointer
+#include "vtkTetMeshBuildState.h"     // For vtkTetMeshBuildState::Stamp
 #include "vtkTiledRayCastMeshInput.h" // For vtkTiledRayCastMeshInput
 #include "vtkType.h"                  // For vtkIdType, vtkMTimeType
 
 #include <string> // For std::string
+#include <vector> // For std::vector
 
 class vtkCallbackCommand;
 class vtkDataObject;
@@ -98,7 +100,8 @@ private:
   // The input and user limit last found within the GPU memory budget: checked again only when
   // one changes (the check reads every cell type).
   const void* BudgetInput = nullptr;
-  vtkMTimeType BudgetInputTime = 0;
+  std::vector<vtkTetMeshBuildState::Stamp> BudgetTopology;
+  vtkIdType BudgetPoints = -1;
   vtkIdType BudgetUserLimit = -1;
   bool NewLayout = false;
 };
