@@ -138,13 +138,9 @@ def main():
     parser.add_argument("-T", dest="temp", required=True)
     parser.add_argument("--timeout", type=int, default=600)
     options = parser.parse_args()
-    if not os.path.exists(os.path.join(options.root, "usr", "bin", "paraview")):
-        print("SKIP: no private ParaView root at %s (ParaView/fetch-paraview.sh could not fetch "
-              "it here: see the setup test's output)" % options.root)
-        return 125
-    if not os.path.exists(options.plugin):
-        print("SKIP: the plugin %s was not built (see the setup test's output)" % options.plugin)
-        return 125
+    skip = single.skipped(options, "paraview")
+    if skip:
+        return skip
     options.mesh_file = os.path.join(options.data, "Meshes", options.mesh + ".vtu")
     output = os.path.join(options.temp, "ParaView_gui")
     shutil.rmtree(output, ignore_errors=True)

@@ -47,6 +47,19 @@ WARNING = re.compile(r"WARN\||ERR\||Warning|ERROR|Error", re.IGNORECASE)
 BOUNDS = (0.75, 1.0, 2.0)
 
 
+def skipped(options, program):
+    """Why the test cannot run here (printed, then the ctest skip status 125), or None: the
+    private root's `program` or the plugin missing."""
+    if not os.path.exists(os.path.join(options.root, "usr", "bin", program)):
+        print("SKIP: no private ParaView root at %s (ParaView/fetch-paraview.sh could not fetch "
+              "it here: see the setup test's output)" % options.root)
+        return 125
+    if not os.path.exists(options.plugin):
+        print("SKIP: the plugin %s was not built (see the setup test's output)" % options.plugin)
+        return 125
+    return None
+
+
 def run_pvbatch(options, name, extra):
     output = os.path.join(options.temp, name)
     env = dict(os.environ)
@@ -213,14 +226,9 @@ def main():
     parser.add_argument("-T", dest="temp", required=True)
     parser.add_argument("--size", type=int, default=200)
     options = parser.parse_args()
-    pvbatch = os.path.join(options.root, "usr", "bin", "pvbatch")
-    if not os.path.exists(pvbatch):
-        print("SKIP: no private ParaView root at %s (ParaView/fetch-paraview.sh could not fetch "
-              "it here: see the setup test's output)" % options.root)
-        return 125
-    if not os.path.exists(options.plugin):
-        print("SKIP: the plugin %s was not built (see the setup test's output)" % options.plugin)
-        return 125
+    skip = skipped(options, "pvbatch")
+    if skip:
+        return skip
     ok = True
     if options.case == "meshes":
         for mesh in ("bluntfin_tets", "spx_vistrails"):
