@@ -568,11 +568,14 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     return; // drawn with the volumes it overlaps, or in depth order, by another's mapper
   }
-  // VTK draws volumes in the order they were added: the first of ours draws all of them,
+  // VTK draws volumes in the order they were added: the first of ours (the visible volumes of
+  // this module's mappers in the renderer, grouped below where they overlap) draws all of them,
   // farthest first. (Inside VTK's depth peeling each stage draws each volume between the
   // stage's depths, in VTK's order.)
+  const std::vector<vtkTiledRayCastVolumeGroup::Candidate> ours =
+    this->Impl->FindOurVolumes(ren, vol);
   if (!vtkTiledRayCastVolumetricPeel::FindPass(vol) &&
-    vtkTiledRayCastVolumeGroup::RenderInDepthOrder(ren, this->Impl->FindOurVolumes(ren, vol)))
+    vtkTiledRayCastVolumeGroup::RenderInDepthOrder(ren, ours))
   {
     return;
   }
@@ -646,9 +649,10 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // Overlapping volumes of our mappers: the first drawn draws them all in one traversal (not
   // inside VTK's depth peeling, which draws each volume on its own).
-  impl->GroupSize = impl->PeelStage() > 0
+  impl->GroupSize = impl->PeelStage() > 0 || ours.size() < 2
     ? 1
-    : vtkTiledRayCastVolumeGroup::Render(ren, window, impl->FindGroup(ren, vol));
+    : vtkTiledRayCastVolumeGroup::Render(
+        ren, window, vtkTiledRayCastVolumeGroup::Select(ours, vol));
   if (impl->GroupSize > 1)
   {
     impl->WarnAfterFrame();

@@ -48,18 +48,6 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindOurVolumes(vtkRenderer* ren
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkTiledRayCastVolumeGroup::Candidate>
-vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FindGroup(vtkRenderer* ren, vtkVolume* vol)
-{
-  std::vector<vtkTiledRayCastVolumeGroup::Candidate> candidates = this->FindOurVolumes(ren, vol);
-  if (candidates.size() < 2)
-  {
-    return {};
-  }
-  return vtkTiledRayCastVolumeGroup::Select(candidates, vol);
-}
-
-//------------------------------------------------------------------------------
 std::string vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupRefusal(
   vtkVolume* volume, bool prepared)
 {

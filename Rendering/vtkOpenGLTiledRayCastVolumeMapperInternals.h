@@ -129,7 +129,7 @@ public:
   // frame's traversal (empty when it draws its own alone), and how many were drawn together.
   std::vector<vtkTiledRayCastGroupMember*> Group;
   int GroupSize = 1;
-  // vtkTiledRayCastGroupMember, and FindGroup: vtkOpenGLTiledRayCastVolumeMapperGroup.cxx.
+  // vtkTiledRayCastGroupMember, and FindOurVolumes: vtkOpenGLTiledRayCastVolumeMapperGroup.cxx.
   std::string GetGroupRefusal(vtkVolume* volume, bool prepared) override;
   bool PrepareGroupFrame(vtkRenderer* ren, vtkVolume* vol, vtkOpenGLRenderWindow* window,
     bool draws, int rays[2]) override;
@@ -141,8 +141,6 @@ public:
     const std::vector<vtkTiledRayCastGroupMember*>& members) override;
   void FinishGroupFrame(int volumes) override;
   void WarnGroupOnce(const std::string& text) override;
-  // The group of this mapper's volume in the renderer (itself alone where it overlaps none).
-  std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindGroup(vtkRenderer* ren, vtkVolume* vol);
   // The visible volumes of this module's OpenGL mappers in `ren` (and `vol`), in its order.
   std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindOurVolumes(
     vtkRenderer* ren, vtkVolume* vol);
