@@ -58,8 +58,6 @@ PT = "Projected tetra"
 # 99.9th percentile, max in 1/255.
 ACROSS_RANKS = (0.3, 8.0, 8.0)
 AGAINST_REFERENCE = (0.75, 2.0, 3.0)
-# Warnings pvbatch may print that are not ours: none (TestParaViewPlugin.py).
-KNOWN = single.KNOWN_PARAVIEW_WARNINGS
 
 
 class Runner:
@@ -186,13 +184,13 @@ class Runner:
         return not found
 
     def warnings(self, lines, expected=()):
-        """The warnings and errors printed, less ParaView's known one and those expected."""
+        """The warnings and errors printed, less those expected."""
         found = []
         for line in lines:
             if line.startswith("statistics:"):
                 continue
             if single.WARNING.search(line) and not any(
-                    __import__("re").search(k, line) for k in list(KNOWN) + list(expected)):
+                    __import__("re").search(k, line) for k in expected):
                 found.append(line)
         return found
 
