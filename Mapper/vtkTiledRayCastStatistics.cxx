@@ -52,6 +52,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfIncompleteRays = 0;
   this->NumberOfGroupedVolumes = 0;
   this->NumberOfMixedRays = 0;
+  this->NumberOfVolumeSetsInDepthOrder = 0;
   this->NumberOfShaderCompositions = 0;
   this->NumberOfSteps = 0;
   this->MaximumStepsPerRay = 0;
@@ -180,6 +181,8 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfIncompleteRays: " << this->NumberOfIncompleteRays << "\n";
   os << indent << "NumberOfGroupedVolumes: " << this->NumberOfGroupedVolumes << "\n";
   os << indent << "NumberOfMixedRays: " << this->NumberOfMixedRays << "\n";
+  os << indent << "NumberOfVolumeSetsInDepthOrder: " << this->NumberOfVolumeSetsInDepthOrder
+     << "\n";
   os << indent << "NumberOfShaderCompositions: " << this->NumberOfShaderCompositions << "\n";
   os << indent << "NumberOfSteps: " << this->NumberOfSteps << "\n";
   os << indent << "MaximumStepsPerRay: " << this->MaximumStepsPerRay << "\n";

@@ -189,6 +189,16 @@ public:
   vtkGetMacro(NumberOfMixedRays, vtkIdType);
   ///@}
 
+  /**
+   * Volumes apart (docs/mapper.md, "Volumes apart"): where a renderer holds several sets of this
+   * module's volumes (a group of overlapping volumes, or a volume alone), the first of them that
+   * VTK draws draws them all, farthest first (inside VTK's depth peeling, in each of its stages,
+   * over one another before they reach the pass's targets). The number of sets this mapper's
+   * volume drew in depth order in its last draw; 0 where it drew only itself (or its group).
+   */
+  vtkSetMacro(NumberOfVolumeSetsInDepthOrder, int);
+  vtkGetMacro(NumberOfVolumeSetsInDepthOrder, int);
+
   ///@{
   /**
    * How many times this frame composed the GLSL of the programs it draws with (the mapper's own,
@@ -374,6 +384,7 @@ protected:
   vtkIdType NumberOfIncompleteRays = 0;
   int NumberOfGroupedVolumes = 0;
   vtkIdType NumberOfMixedRays = 0;
+  int NumberOfVolumeSetsInDepthOrder = 0;
   int NumberOfShaderCompositions = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;

@@ -128,6 +128,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::RenderCompute(vtkOpenGLRen
   frame.PeelStage = this->PeelStage();
   frame.Peel = &this->VolumetricPeel;
   frame.PeelVolume = this->FrameVolume;
+  frame.Accumulation = frame.PeelStage > 0 ? vtkTiledRayCastPeelAccumulation::GetActive() : nullptr;
   std::copy(this->Geometry.NearPlane, this->Geometry.NearPlane + 3, frame.ViewDirection);
   frame.BoundsCoverage = this->Geometry.BoundsCoverage;
   frame.ViewportOrigin[0] = static_cast<float>(this->Viewport[0]);
@@ -360,6 +361,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
   this->Integration.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
   this->OpaqueDepth.ReleaseGraphicsResources(window);
+  this->PeelAccumulation.ReleaseGraphicsResources(window);
   this->UseCompute = false;
   this->Composition.Reset();
   this->Timers.ReleaseGraphicsResources();
@@ -570,12 +572,13 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   // VTK draws volumes in the order they were added: the first of ours (the visible volumes of
   // this module's mappers in the renderer, grouped below where they overlap) draws all of them,
-  // farthest first. (Inside VTK's depth peeling each stage draws each volume between the
-  // stage's depths, in VTK's order.)
+  // farthest first; inside VTK's depth peeling, in each of its stages, between the stage's
+  // depths.
   const std::vector<vtkTiledRayCastVolumeGroup::Candidate> ours =
     this->Impl->FindOurVolumes(ren, vol);
-  if (!vtkTiledRayCastVolumetricPeel::FindPass(vol) &&
-    vtkTiledRayCastVolumeGroup::RenderInDepthOrder(ren, ours))
+  // (A volume drawn after VTK's depth peeling, which it could not take part in, draws itself.)
+  if (!this->Impl->Deferred.IsDrawing() &&
+    vtkTiledRayCastVolumeGroup::RenderInDepthOrder(ren, ours, vol))
   {
     return;
   }
@@ -647,16 +650,16 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     impl->Viewport[0] = impl->Viewport[1] = 0;
   }
 
-  // Overlapping volumes of our mappers: the first drawn draws them all in one traversal (not
-  // inside VTK's depth peeling, which draws each volume on its own).
-  impl->GroupSize = impl->PeelStage() > 0 || ours.size() < 2
-    ? 1
-    : vtkTiledRayCastVolumeGroup::Render(
-        ren, window, vtkTiledRayCastVolumeGroup::Select(ours, vol));
+  // Overlapping volumes of our mappers: the first drawn draws them all in one traversal (inside
+  // VTK's depth peeling, in each of its stages).
+  impl->GroupSize = ours.size() < 2 ? 1
+                                    : vtkTiledRayCastVolumeGroup::Render(
+                                        ren, window, vtkTiledRayCastVolumeGroup::Select(ours, vol));
   if (impl->GroupSize > 1)
   {
     impl->WarnAfterFrame();
-    this->FinishRender(impl->Compute.GetTargetBytes() + 4 * static_cast<vtkIdType>(width) * height);
+    this->FinishRender(impl->Compute.GetTargetBytes() + impl->PeelAccumulation.GetBytes() +
+      4 * static_cast<vtkIdType>(width) * height);
     return;
   }
   impl->GroupSize = 1;
@@ -668,11 +671,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
   impl->WarnAfterFrame();
-  // Per pixel: the compute pipeline's targets and the scene depth (4 B); or the fragment
-  // pipeline's.
+  // Per pixel: the compute pipeline's targets, the scene depth (4 B) and any accumulation of
+  // several volumes in VTK's depth peeling; or the fragment pipeline's.
   const vtkIdType pixels = static_cast<vtkIdType>(width) * height;
   this->FinishRender(impl->UseCompute
-      ? impl->Compute.GetTargetBytes() + 4 * pixels
+      ? impl->Compute.GetTargetBytes() + impl->PeelAccumulation.GetBytes() + 4 * pixels
       : vtkTiledRayCastFragmentPipeline::GetBytesPerPixel() * pixels);
 }
 

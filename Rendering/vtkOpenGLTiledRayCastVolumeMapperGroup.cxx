@@ -72,11 +72,18 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareGroupFrame(
     {
       return false;
     }
+    // Inside VTK's depth peeling the group is drawn in the stage drawing the first volume.
+    this->VolumetricPeel.Update(self, vol);
   }
   int width = 0, height = 0;
   ren->GetTiledSizeAndOrigin(&width, &height, &this->Viewport[0], &this->Viewport[1]);
   this->Viewport[2] = width;
   this->Viewport[3] = height;
+  if (this->PeelStage() > 0)
+  {
+    // The peeling pass draws into textures of the viewport's size, from their origin.
+    this->Viewport[0] = this->Viewport[1] = 0;
+  }
   int own[2];
   // The group's mixture reads every volume's transfer-function nodes.
   this->Integration.SetForcePartial(true);
@@ -154,6 +161,13 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::DrawGroup(vtkOpenGLRenderW
       return false;
     }
   }
+  // Outside VTK's depth peeling, or in its stage (each built on first use).
+  std::string error;
+  if (!this->Compute.PrepareGroupStage(this->PeelStage(), error))
+  {
+    this->ReportError(error + " The volumes are drawn one by one.");
+    return false;
+  }
   this->Group = members;
   const bool ok = this->DrawFrame(window, rays);
   this->Group.clear();
@@ -176,4 +190,49 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnGroupOnce(const std::s
     vtkWarningWithObjectMacro(this->Self, << text);
     this->WarnedGroup = true;
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BeginDepthOrder(
+  vtkRenderer* ren, vtkVolume* vol, bool stage)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!stage)
+  {
+    return true; // drawn one over another into the renderer's framebuffer
+  }
+  if (!window)
+  {
+    return false;
+  }
+  this->Self->ResourceCallback->RegisterGraphicsResources(window);
+  const int peel = this->VolumetricPeel.Update(this->Self, vol);
+  if (!this->CheckContext(window) || !this->Context.ComputeSupported ||
+    peel < vtkTiledRayCastVolumetricPeel::BeforePeels ||
+    peel > vtkTiledRayCastVolumetricPeel::Remainder)
+  {
+    return false; // each volume draws itself (or is drawn after the peeling)
+  }
+  // The pass's textures have the viewport's size.
+  int width = 0, height = 0, x = 0, y = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  std::string error;
+  return this->Reported(this->PeelAccumulation.Begin(window, peel, width, height, error), error);
+}
+
+//------------------------------------------------------------------------------
+void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishDepthOrder(
+  vtkRenderer* ren, vtkVolume* vol, bool stage, int sets)
+{
+  // After the volume's own draw among the sets, which reset its statistics.
+  this->Self->Statistics->SetNumberOfVolumeSetsInDepthOrder(sets);
+  if (!stage)
+  {
+    return;
+  }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  // The volumes drawn since may have asked the pass about themselves: it is asked about this
+  // one's stage again, whose textures it binds.
+  this->VolumetricPeel.Update(this->Self, vol);
+  this->PeelAccumulation.Finish(window, this->VolumetricPeel);
 }

@@ -36,6 +36,7 @@
 #include "vtkTiledRayCastMeshBuild.h"            // For vtkTiledRayCastMeshBuild
 #include "vtkTiledRayCastMeshTextures.h"         // For vtkTiledRayCastMeshTextures
 #include "vtkTiledRayCastOpaqueDepth.h"          // For vtkTiledRayCastOpaqueDepth
+#include "vtkTiledRayCastPeelAccumulation.h"     // For vtkTiledRayCastPeelAccumulation
 #include "vtkTiledRayCastPhaseTimers.h"          // For vtkTiledRayCastPhaseTimers
 #include "vtkTiledRayCastSampleDistance.h"       // For vtkTiledRayCastSampleDistance
 #include "vtkTiledRayCastShaderComposition.h"    // For vtkTiledRayCastShaderComposition
@@ -141,6 +142,10 @@ public:
     const std::vector<vtkTiledRayCastGroupMember*>& members) override;
   void FinishGroupFrame(int volumes) override;
   void WarnGroupOnce(const std::string& text) override;
+  bool BeginDepthOrder(vtkRenderer* ren, vtkVolume* vol, bool stage) override;
+  void FinishDepthOrder(vtkRenderer* ren, vtkVolume* vol, bool stage, int sets) override;
+  // Several sets of our volumes in a stage of VTK's depth peeling, drawn by this mapper.
+  vtkTiledRayCastPeelAccumulation PeelAccumulation;
   // The visible volumes of this module's OpenGL mappers in `ren` (and `vol`), in its order.
   std::vector<vtkTiledRayCastVolumeGroup::Candidate> FindOurVolumes(
     vtkRenderer* ren, vtkVolume* vol);

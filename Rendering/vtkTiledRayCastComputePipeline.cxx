@@ -19,6 +19,7 @@
 #include "vtkTextureObject.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastDebugEvent.h"
+#include "vtkTiledRayCastPeelAccumulation.h"
 #include "vtkTiledRayCastPhaseTimers.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTiledRayCastVolumetricPeel.h"
@@ -97,8 +98,8 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
 {
   vtkOpenGLState* state = frame.Window->GetState();
   // A later stage of VTK's depth peeling traverses the entries the volume's first stage listed.
-  const bool reuse =
-    frame.PeelStage >= 2 && frame.PeelVolume && frame.PeelVolume == this->EntriesKeptFor;
+  const bool reuse = frame.PeelStage >= 2 && frame.PeelVolume &&
+    frame.PeelVolume == this->EntriesKeptFor && frame.Members.size() == this->EntriesKeptMembers;
   if (!this->BeginFrame(frame, reuse, stats, error))
   {
     state->PopFramebufferBindings();
@@ -125,14 +126,22 @@ bool vtkTiledRayCastComputePipeline::Render(const Frame& frame, vtkTiledRayCastP
   {
     return false;
   }
-  vtkTiledRayCastDebugEvent event("Composite");
-  timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
-  const int* viewport = frame.Viewport;
-  state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-  state->vtkglEnable(GL_BLEND);
-  state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  this->Composite(frame, setup);
-  timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
+  if (frame.Accumulation)
+  {
+    // One of several sets of volumes in a stage of VTK's depth peeling: over the sets behind.
+    frame.Accumulation->Add(frame.Window, this->Color, this->BackColor);
+  }
+  else
+  {
+    vtkTiledRayCastDebugEvent event("Composite");
+    timers.Start(vtkTiledRayCastPhaseTimers::Compositing);
+    const int* viewport = frame.Viewport;
+    state->vtkglViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    this->Composite(frame, setup);
+    timers.Stop(vtkTiledRayCastPhaseTimers::Compositing);
+  }
 
   stats->SetDepthPeelingEntriesReused(reuse);
   stats->SetNumberOfTiles(vtkTiledRayCastComputePipeline::GetNumberOfTiles(frame));
@@ -238,6 +247,12 @@ bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(vtkOpenGLRenderWindow* 
   }
   return this->Group.Update(inputs, members,
     "#version 430 core\n#define TRC_ENTRY_LIST\n#define TRC_GROUP_ENTRIES\n", error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastComputePipeline::PrepareGroupStage(int stage, std::string& error)
+{
+  return this->Group.Prepare(stage, error);
 }
 
 //------------------------------------------------------------------------------
@@ -567,10 +582,10 @@ void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const
 void vtkTiledRayCastComputePipeline::SetGroupUniforms(const Frame& frame)
 {
   // Each volume's own uniforms, by its own setters, under its suffix; then what they share.
-  vtkTiledRayCastComputeShader* traversal = this->Group.GetProgram();
+  vtkTiledRayCastComputeShader* traversal = this->Group.GetProgram(frame.PeelStage);
   for (size_t k = 0; k < frame.Members.size(); ++k)
   {
-    vtkShaderProgram* member = this->Group.Member(static_cast<int>(k));
+    vtkShaderProgram* member = this->Group.Member(frame.PeelStage, static_cast<int>(k));
     vtkTiledRayCastProgramSetup* setup = frame.Members[k].Setup;
     setup->SetFrameUniforms(member);
     setup->SetMeshUniforms(member);
@@ -589,10 +604,10 @@ void vtkTiledRayCastComputePipeline::Traverse(
 {
   vtkTiledRayCastStorageBuffer& counts = this->RayCounts[this->CountsBuffer];
   counts.Write(0, NumberOfRayCounts * sizeof(std::uint32_t));
-  vtkTiledRayCastComputeShader* traversal = frame.PeelStage > 0
-    ? this->Peel[frame.PeelStage - 1].Traversal.Get()
-    : frame.Members.empty() ? this->Traversal.Get()
-                            : this->Group.GetProgram();
+  vtkTiledRayCastComputeShader* traversal = !frame.Members.empty()
+    ? this->Group.GetProgram(frame.PeelStage)
+    : frame.PeelStage > 0 ? this->Peel[frame.PeelStage - 1].Traversal.Get()
+                          : this->Traversal.Get();
   traversal->Use(frame.Window);
   if (frame.Members.empty())
   {
@@ -631,6 +646,7 @@ void vtkTiledRayCastComputePipeline::Traverse(
   if (keep)
   {
     this->EntriesKeptFor = frame.PeelVolume;
+    this->EntriesKeptMembers = frame.Members.size();
   }
   if (frame.PeelStage > 0)
   {

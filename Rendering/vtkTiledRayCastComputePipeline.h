@@ -66,6 +66,7 @@ class vtkOpenGLVertexArrayObject;
 class vtkShaderProgram;
 class vtkTextureObject;
 class vtkTiledRayCastComputeShader;
+class vtkTiledRayCastPeelAccumulation;
 class vtkTiledRayCastPhaseTimers;
 class vtkTiledRayCastStatistics;
 class vtkTiledRayCastVolumetricPeel;
@@ -112,6 +113,12 @@ public:
   bool UpdateGroupPrograms(vtkOpenGLRenderWindow* window,
     const std::vector<vtkTiledRayCastGroupTraversal::Inputs>& inputs,
     const std::vector<Replacements>& members, std::string& error);
+
+  /**
+   * The group's traversal for `stage` (0 outside VTK's dual depth peeling, else its stage),
+   * built on first use after UpdateGroupPrograms. False with a message when it does not build.
+   */
+  bool PrepareGroupStage(int stage, std::string& error);
 
   /**
    * Whether the group's programs are to be built (UpdateGroupPrograms) for volumes of these
@@ -181,9 +188,12 @@ public:
     // textures, which the viewport (origin 0) covers.
     int PeelStage = 0;
     const vtkTiledRayCastVolumetricPeel* Peel = nullptr;
-    // The volume drawn in the peeling: its later stages traverse the entries its first stage
-    // listed (the view is the same in every draw of a frame).
+    // The volume drawn in the peeling (a group's first): its later stages traverse the entries
+    // its first stage listed (the view is the same in every draw of a frame).
     const void* PeelVolume = nullptr;
+    // Several sets of volumes in the stage, drawn farthest first: the colours go over the
+    // stage's accumulation, which composites them once (null: composited here).
+    vtkTiledRayCastPeelAccumulation* Accumulation = nullptr;
   };
 
   /**
@@ -347,6 +357,7 @@ private:
   // leaves the heads as they are for that volume (EntriesKeptFor, null when the traversal set
   // them back to 0), the draws after the first list nothing, and the next listing clears them.
   const void* EntriesKeptFor = nullptr;
+  size_t EntriesKeptMembers = 0; // and the volumes of its group (0: alone)
 };
 
 #endif

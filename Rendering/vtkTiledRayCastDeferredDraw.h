@@ -49,6 +49,12 @@ public:
    */
   void Stop();
 
+  /**
+   * Whether the deferred draw is drawing the volume now (its mapper's Render() called from the
+   * renderer's end).
+   */
+  bool IsDrawing() const { return this->Drawing; }
+
 private:
   vtkTiledRayCastDeferredDraw(const vtkTiledRayCastDeferredDraw&) = delete;
   void operator=(const vtkTiledRayCastDeferredDraw&) = delete;

@@ -18,6 +18,7 @@
 #include "vtkTiledRayCastGroupMember.h"
 #include "vtkTiledRayCastGroupTraversalCS.h"
 #include "vtkTiledRayCastTraversalTile.h"
+#include "vtkTiledRayCastVolumetricPeelRanges.h"
 #include "vtkTiledRayCastWalk.h"
 
 #include <cctype>
@@ -151,63 +152,91 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
     volumes += "// Volume " + std::to_string(k) + "\n" + Rename(code, "_v" + std::to_string(k));
   }
   std::string source = Expand(vtkTiledRayCastGroupTraversalCS, count);
-  vtkShaderProgram::Substitute(source, "//TRC::Version",
-    version + "#define TRC_GROUP_MEMBERS " + std::to_string(count) + "\n", false);
   vtkShaderProgram::Substitute(source, "//TRC::Group::Members", volumes, false);
   vtkShaderProgram::Substitute(source, "//TRC::EntryList::Dec", vtkTiledRayCastEntryList, false);
   vtkShaderProgram::Substitute(
     source, "//TRC::TraversalTile::Dec", vtkTiledRayCastTraversalTile, false);
-
-  vtkTiledRayCastComputeShader* program = this->Program;
-  if (source == program->GetSource() && program->GetHandle() && count == this->NumberOfMembers)
-  {
-    this->Composition.Built(inputs);
-    return true;
-  }
-  if (!program->Build(source))
-  {
-    error = "The compute shader of the tiled ray caster's traversal of overlapping volumes failed "
-            "to build (" +
-      program->GetError() + ").";
-    this->NumberOfMembers = 0;
-    return false;
-  }
-  for (int k = 0; k < MaximumMembers; ++k)
-  {
-    if (k < count)
-    {
-      this->Members[k]->Map(program, "_v" + std::to_string(k), { "in_opaqueDepth" });
-    }
-    else
-    {
-      this->Members[k]->Unmap();
-    }
-  }
+  this->Source = source;
+  this->Version = version + "#define TRC_GROUP_MEMBERS " + std::to_string(count) + "\n";
   this->NumberOfMembers = count;
+  for (StageProgram& stage : this->Stages)
+  {
+    stage.Built = false;
+  }
   this->Composition.Built(inputs);
   return true;
 }
 
 //------------------------------------------------------------------------------
-vtkTiledRayCastComputeShader* vtkTiledRayCastGroupTraversal::GetProgram()
+bool vtkTiledRayCastGroupTraversal::Prepare(int stage, std::string& error)
 {
-  return this->Program;
+  if (stage < 0 || stage >= NumberOfStages || this->NumberOfMembers == 0)
+  {
+    error = "The traversal of overlapping volumes has no program for this stage.";
+    return false;
+  }
+  StageProgram& built = this->Stages[stage];
+  if (built.Built)
+  {
+    return true;
+  }
+  // Inside VTK's depth peeling: the stage's ranges (vtkTiledRayCastVolumetricPeelRanges.glsl).
+  std::string source = this->Source;
+  vtkShaderProgram::Substitute(source, "//TRC::Version",
+    stage > 0 ? this->Version + "#define TRC_PEEL_STAGE " + std::to_string(stage) + "\n"
+              : this->Version,
+    false);
+  vtkShaderProgram::Substitute(source, "//TRC::VolumetricPeel::Dec",
+    stage > 0 ? vtkTiledRayCastVolumetricPeelRanges : "", false);
+  vtkTiledRayCastComputeShader* program = built.Program;
+  if ((source != program->GetSource() || !program->GetHandle()) && !program->Build(source))
+  {
+    error = "The compute shader of the tiled ray caster's traversal of overlapping volumes failed "
+            "to build (" +
+      program->GetError() + ").";
+    this->Invalidate();
+    return false;
+  }
+  for (int k = 0; k < MaximumMembers; ++k)
+  {
+    if (k < this->NumberOfMembers)
+    {
+      built.Members[k]->Map(program, "_v" + std::to_string(k), { "in_opaqueDepth" });
+    }
+    else
+    {
+      built.Members[k]->Unmap();
+    }
+  }
+  built.Built = true;
+  return true;
 }
 
 //------------------------------------------------------------------------------
-vtkShaderProgram* vtkTiledRayCastGroupTraversal::Member(int k)
+vtkTiledRayCastComputeShader* vtkTiledRayCastGroupTraversal::GetProgram(int stage)
 {
-  return this->Members[k];
+  return this->Stages[stage].Program;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkTiledRayCastGroupTraversal::Member(int stage, int k)
+{
+  return this->Stages[stage].Members[k];
 }
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastGroupTraversal::ReleaseGraphicsResources()
 {
-  for (auto& member : this->Members)
+  for (StageProgram& stage : this->Stages)
   {
-    member->Unmap();
+    for (auto& member : stage.Members)
+    {
+      member->Unmap();
+    }
+    stage.Program->ReleaseProgram();
+    stage.Built = false;
   }
-  this->Program->ReleaseProgram();
   this->NumberOfMembers = 0;
+  this->Source.clear();
   this->Composition.Reset();
 }

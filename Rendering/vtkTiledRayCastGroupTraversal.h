@@ -10,7 +10,7 @@
 =========================================================================*/
 /**
  * @class   vtkTiledRayCastGroupTraversal
- * @brief   the compute program that traverses up to four overlapping volumes in one pass
+ * @brief   the compute programs that traverse up to four overlapping volumes in one pass
  *
  * Composes vtkTiledRayCastGroupTraversalCS.glsl from each volume's own GLSL (its common,
  * layout, integration and walk code, as vtkTiledRayCastShaderComposition composes them for
@@ -52,17 +52,24 @@ public:
   using Inputs = vtkTiledRayCastShaderComposition::Inputs;
 
   /**
-   * Build (or keep) the program for these volumes: `members[k]` is volume k's
-   * //TRC::Common::Dec, //TRC::Layout::Dec and //TRC::Integration::Dec code, composed from
-   * `inputs[k]`, `version` the program's first lines. False with a message when it does not
-   * build.
+   * Compose the programs for these volumes: `members[k]` is volume k's //TRC::Common::Dec,
+   * //TRC::Layout::Dec and //TRC::Integration::Dec code, composed from `inputs[k]`, `version`
+   * the program's first lines. Each program is built when first asked for (Prepare). False with
+   * a message when there are too few or too many volumes.
    */
   bool Update(const std::vector<Inputs>& inputs, const std::vector<Replacements>& members,
     const std::string& version, std::string& error);
 
   /**
-   * Whether the program (and the group's raster programs, built with it) is to be built for
-   * volumes of these inputs: false when it was last built for them.
+   * Build (or keep) the program of `stage`: 0 outside VTK's dual depth peeling, 1 to 3 its
+   * stages (vtkTiledRayCastVolumetricPeel: each volume between the stage's depths, a front and
+   * a back colour). False with a message when it does not build.
+   */
+  bool Prepare(int stage, std::string& error);
+
+  /**
+   * Whether the programs (and the group's raster programs, built with them) are to be composed
+   * for volumes of these inputs: false when they were last composed for them.
    */
   bool Changed(const std::vector<Inputs>& inputs) const
   {
@@ -70,13 +77,14 @@ public:
   }
   void Invalidate() { this->Composition.Reset(); }
 
-  vtkTiledRayCastComputeShader* GetProgram();
+  vtkTiledRayCastComputeShader* GetProgram(int stage);
 
   /**
-   * Volume k's uniforms, by their plain names, but for in_opaqueDepth: the volumes share the
-   * scene's depth, which the caller sets on the program as in_opaqueDepth_vk.
+   * Volume k's uniforms in the program of `stage`, by their plain names, but for
+   * in_opaqueDepth: the volumes share the scene's depth, which the caller sets on the program as
+   * in_opaqueDepth_vk.
    */
-  vtkShaderProgram* Member(int k);
+  vtkShaderProgram* Member(int stage, int k);
 
   /**
    * Identifiers of `code` given `suffix` (trc*, Trc*, TRC_* and in_*); public for the tests.
@@ -95,8 +103,18 @@ private:
   vtkTiledRayCastGroupTraversal(const vtkTiledRayCastGroupTraversal&) = delete;
   void operator=(const vtkTiledRayCastGroupTraversal&) = delete;
 
-  vtkNew<vtkTiledRayCastComputeShader> Program;
-  vtkNew<vtkTiledRayCastMemberUniforms> Members[MaximumMembers];
+  // Outside VTK's depth peeling (0) and in each of its stages (1 to 3): the program, built on
+  // first use from Source, and each volume's uniforms in it.
+  static constexpr int NumberOfStages = 4;
+  struct StageProgram
+  {
+    vtkNew<vtkTiledRayCastComputeShader> Program;
+    vtkNew<vtkTiledRayCastMemberUniforms> Members[MaximumMembers];
+    bool Built = false;
+  };
+  StageProgram Stages[NumberOfStages];
+  std::string Source; // every volume's code in place; the version lines not yet
+  std::string Version;
   int NumberOfMembers = 0;
   vtkTiledRayCastGroupComposition Composition;
 };

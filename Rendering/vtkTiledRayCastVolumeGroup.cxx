@@ -18,6 +18,7 @@
 #include "vtkRenderer.h"
 #include "vtkTiledRayCastVolumeMapper.h"
 #include "vtkTiledRayCastVolumeOrder.h"
+#include "vtkTiledRayCastVolumetricPeel.h"
 #include "vtkVolume.h"
 #include "vtkVolumeMapper.h"
 #include "vtkVolumeProperty.h"
@@ -36,6 +37,9 @@ struct RendererFrame
 {
   vtkWeakPointer<vtkRenderer> Renderer;
   std::set<vtkVolume*> Drawn;
+  // Inside VTK's depth peeling, which draws every volume in each of its stages: drawn in the
+  // current stage, until the volume's own draw in that stage passes.
+  std::set<vtkVolume*> DrawnInStage;
 };
 std::map<vtkRenderer*, RendererFrame>& Frames()
 {
@@ -58,6 +62,7 @@ void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
   else
   {
     it->second.Drawn.clear();
+    it->second.DrawnInStage.clear();
   }
 }
 
@@ -274,16 +279,17 @@ int vtkTiledRayCastVolumeGroup::Render(
     return 0;
   }
   const int count = static_cast<int>(members.size());
+  const bool stage = vtkTiledRayCastVolumetricPeel::FindPass(group.front().Volume) != nullptr;
   for (size_t i = 1; i < members.size(); ++i)
   {
-    MarkDrawn(renderer, volumes[i]);
+    MarkDrawn(renderer, volumes[i], stage);
     members[i]->FinishGroupFrame(count);
   }
   return count;
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* volume)
+void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* volume, bool stage)
 {
   auto& frames = Frames();
   RendererFrame& frame = frames[renderer];
@@ -297,7 +303,7 @@ void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* vol
     renderer->AddObserver(vtkCommand::StartEvent, callback);
     renderer->AddObserver(vtkCommand::DeleteEvent, callback);
   }
-  frame.Drawn.insert(volume);
+  (stage ? frame.DrawnInStage : frame.Drawn).insert(volume);
 }
 
 //------------------------------------------------------------------------------
@@ -305,13 +311,17 @@ bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volu
 {
   auto& frames = Frames();
   auto it = frames.find(renderer);
-  return it != frames.end() && it->second.Renderer == renderer &&
-    it->second.Drawn.count(volume) > 0;
+  if (it == frames.end() || it->second.Renderer != renderer)
+  {
+    return false;
+  }
+  // A mark of the current stage of VTK's depth peeling serves the volume's draw in that stage.
+  return it->second.Drawn.count(volume) > 0 || it->second.DrawnInStage.erase(volume) > 0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
-  vtkRenderer* renderer, const std::vector<Candidate>& candidates)
+  vtkRenderer* renderer, const std::vector<Candidate>& candidates, vtkVolume* self)
 {
   // Set while the volumes are drawn: their own Render() draws them the usual way.
   static bool ordering = false;
@@ -320,15 +330,18 @@ bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
   {
     return false;
   }
-  vtkMatrix4x4* worldToClip = camera->GetCompositeProjectionTransformMatrix(
-    renderer->GetTiledAspectRatio(), -1.0, 1.0);
+  vtkMatrix4x4* worldToClip =
+    camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0);
   // What is drawn together: each group of overlapping volumes (as its first volume's mapper
   // would find it), each other volume alone; with the world bounds of each.
   std::vector<std::vector<Candidate>> sets;
   std::vector<vtkTiledRayCastVolumeOrder::Bounds> boxes;
   std::set<vtkVolume*> placed;
+  const Candidate* drawer = nullptr;
+  bool drawerInView = false;
   for (const Candidate& c : candidates)
   {
+    drawer = c.Volume == self ? &c : drawer;
     if (placed.count(c.Volume))
     {
       continue;
@@ -336,9 +349,11 @@ bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
     std::vector<Candidate> set = Select(candidates, c.Volume);
     vtkTiledRayCastVolumeOrder::Bounds box = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
       VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN };
+    bool holdsDrawer = false;
     for (const Candidate& member : set)
     {
       placed.insert(member.Volume);
+      holdsDrawer = holdsDrawer || member.Volume == self;
       const double* b = member.Volume->GetBounds();
       for (int k = 0; k < 3; ++k)
       {
@@ -350,9 +365,18 @@ bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
     {
       sets.push_back(set);
       boxes.push_back(box);
+      drawerInView = drawerInView || holdsDrawer;
     }
   }
-  if (sets.size() < 2)
+  // A volume VTK draws though its bounds are out of view draws only itself.
+  if (sets.size() < 2 || !drawer || !drawerInView)
+  {
+    return false;
+  }
+  // Inside VTK's depth peeling, a stage of it: the sets go over one another in the stage's
+  // accumulation, which the calling volume's mapper then composites once.
+  const bool stage = vtkTiledRayCastVolumetricPeel::FindPass(self) != nullptr;
+  if (!drawer->Member->BeginDepthOrder(renderer, self, stage))
   {
     return false;
   }
@@ -366,10 +390,16 @@ bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
       if (!WasDrawn(renderer, member.Volume))
       {
         member.Volume->RenderVolumetricGeometry(renderer);
-        MarkDrawn(renderer, member.Volume);
+      }
+      // Inside the peeling VTK draws every volume in each stage: each but the calling one is
+      // marked for its draw in this stage (a mark the group made was taken above).
+      if (!stage || member.Volume != self)
+      {
+        MarkDrawn(renderer, member.Volume, stage);
       }
     }
   }
   ordering = false;
+  drawer->Member->FinishDepthOrder(renderer, self, stage, static_cast<int>(sets.size()));
   return true;
 }

@@ -26,6 +26,10 @@
  * paper's layout, clipping planes, shading, gradient opacity, more than four volumes) is
  * drawn on its own as before, with one warning per mapper.
  *
+ * Inside VTK's dual depth peeling, which draws every volume in each of its stages, the group is
+ * drawn in each stage between the stage's depths, and its other volumes are marked drawn for
+ * that stage only.
+ *
  * Private to the module: not wrapped, not installed.
  */
 
@@ -92,6 +96,17 @@ public:
    * A warning, once per mapper.
    */
   virtual void WarnGroupOnce(const std::string& text) = 0;
+
+  /**
+   * Where this volume's mapper draws several sets of volumes in depth order
+   * (RenderInDepthOrder), before and after the sets. Inside a stage of VTK's dual depth peeling
+   * (`stage`), Begin makes the stage's accumulation active (vtkTiledRayCastPeelAccumulation),
+   * or returns false where the sets cannot be put in order there (each volume then draws
+   * itself), and Finish composites it into the pass's targets. Finish also says how many sets
+   * were drawn (the statistics).
+   */
+  virtual bool BeginDepthOrder(vtkRenderer* renderer, vtkVolume* volume, bool stage) = 0;
+  virtual void FinishDepthOrder(vtkRenderer* renderer, vtkVolume* volume, bool stage, int sets) = 0;
 };
 
 class vtkTiledRayCastVolumeGroup
@@ -123,21 +138,26 @@ public:
     vtkRenderer* renderer, vtkOpenGLRenderWindow* window, const std::vector<Candidate>& group);
 
   /**
-   * Whether `volume` was drawn in this frame of `renderer` by another volume's mapper.
+   * Whether `volume` was drawn in this frame of `renderer` by another volume's mapper (inside
+   * VTK's depth peeling: in its current stage; the call consumes that mark).
    */
   static bool WasDrawn(vtkRenderer* renderer, vtkVolume* volume);
 
   /**
-   * Draws every volume of `candidates` (the visible volumes of our mappers in `renderer`, the
-   * one whose mapper VTK calls first among them) in depth order, farthest first
+   * Draws every volume of `candidates` (the visible volumes of our mappers in `renderer`;
+   * `self`, among them, is the one whose mapper VTK calls first) in depth order, farthest first
    * (vtkTiledRayCastVolumeOrder): each group of overlapping volumes as one, in one traversal, and
    * each other volume alone, all through vtkVolume::RenderVolumetricGeometry as VTK would draw
-   * them, then marks them drawn for this frame. Volumes wholly outside the camera's frustum are
-   * left to VTK (which culls them). True when it drew them; false, to draw only the calling
-   * volume as usual, when there is nothing to order (fewer than two volumes) or when called
-   * again from a volume it is drawing.
+   * them, then marks them drawn for this frame. Inside VTK's dual depth peeling it does so in
+   * each stage, between the stage's depths: the sets go over one another in `self`'s mapper's
+   * accumulation (BeginStageInDepthOrder), composited into the pass's targets once. Volumes
+   * wholly outside the camera's frustum are left to VTK (which culls them). True when it drew
+   * them; false, to draw only the calling volume as usual, when there is nothing to order
+   * (fewer than two sets in view), when called again from a volume it is drawing, or where the
+   * stage cannot take them in order.
    */
-  static bool RenderInDepthOrder(vtkRenderer* renderer, const std::vector<Candidate>& candidates);
+  static bool RenderInDepthOrder(
+    vtkRenderer* renderer, const std::vector<Candidate>& candidates, vtkVolume* self);
 
   /**
    * Why `mapper`'s `volume` cannot be traversed with others (a phrase), or empty: the mapper's
@@ -153,7 +173,8 @@ public:
   static bool Overlap(vtkVolume* a, vtkVolume* b);
 
 private:
-  static void MarkDrawn(vtkRenderer* renderer, vtkVolume* volume);
+  // Drawn in this frame of the renderer, or only in this stage of VTK's depth peeling (`stage`).
+  static void MarkDrawn(vtkRenderer* renderer, vtkVolume* volume, bool stage = false);
 };
 
 #endif

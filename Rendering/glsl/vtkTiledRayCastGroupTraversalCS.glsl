@@ -37,6 +37,13 @@ uniform int in_maximumSteps;
 // Early ray termination (the first volume's).
 uniform float in_groupEarlyTermination;
 
+#ifdef TRC_PEEL_STAGE
+// Taking part in VTK's dual depth peeling: the ranges it asks for
+// (vtkTiledRayCastVolumetricPeelRanges.glsl); the front one goes to in_colorImage, the back one here.
+//TRC::VolumetricPeel::Dec
+layout(binding = 3, rgba16) uniform writeonly image2D in_backColorImage;
+#endif
+
 const float TRC_GROUP_FAR = 3.4e38;
 // Parts of a mixture are cut into panels of at most this optical depth, each integrated with
 // 3-point Gauss-Legendre (error bound in docs/design.md).
@@ -189,96 +196,158 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
   return goesOn;
 }
 
+// The walk of every volume along this invocation's ray from mu = muFrom to muTo (the whole ray
+// outside VTK's depth peeling), integrated into `color`: each volume starts before its first
+// entry, crosses what lies before muFrom without integrating it, and stops at muTo.
+void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout vec4 color,
+  inout int steps, inout uint layers, inout bool startedNear, inout bool opaque,
+  inout bool stopped, inout bool mixed)
+{
+  // Where opaque geometry, the far plane or the range ends the ray, in mu.
+  float muMax = muTo;
+//TRC::EachMember trcMemberStart_v@(fragCoord, trcVolume@);
+#ifdef TRC_PEEL_STAGE
+//TRC::EachMember trcVolume@.ray.lambdaMin = muFrom + trcVolume@.lambdaNear;
+//TRC::EachMember trcVolume@.ray.lambdaMax = min(trcVolume@.ray.lambdaMax, muTo + trcVolume@.lambdaNear);
+#endif
+//TRC::EachMember muMax = min(muMax, trcVolume@.ray.lambdaMax - trcVolume@.lambdaNear);
+//TRC::EachMember trcVolume@.pending = trcNextEntry(head, @u, true, 0.0, 0.0, 0u, trcVolume@.entryLambda, trcVolume@.entryKey, trcVolume@.entryNear) != 0u;
+  float mu = -TRC_GROUP_FAR;
+  int count = 0;  // volumes inside
+  int alone = -1; // the last of them
+  // After a walk that stopped at another volume's entry, at least one event before the next.
+  bool handedBack = false;
+  bool finished = false;
+  // The walks of lone volumes and the event loop are apart, each a tight loop of its own (a
+  // CPU implementation runs every branch of a loop body: walks inside the event loop made
+  // every event cost every volume's walk).
+  while (!finished)
+  {
+    if (count == 1 && !trcGroupWalkAlone(head, alone, mu, color, steps, stopped, handedBack))
+    {
+      opaque = color.a >= in_groupEarlyTermination;
+      break;
+    }
+    while (true)
+    {
+      // The nearest event: volume m leaves its tet or enters. Only m moves on.
+      int m = -1;
+      float event = TRC_GROUP_FAR;
+      count = 0;
+//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.exitAt - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
+      if (m < 0)
+      {
+        finished = true;
+        break;
+      }
+      if (count == 1 && !handedBack)
+      {
+        break; // one volume inside: its own walk
+      }
+      handedBack = false;
+      // Integrate up to the event (or the end of the ray) with the volumes inside, each from
+      // where it is to there in its own lambda (its own exit exactly, when the event is that).
+      float end = min(event, muMax);
+      bool used[TRC_GROUP_MEMBERS];
+      float sf[TRC_GROUP_MEMBERS];
+      float sb[TRC_GROUP_MEMBERS];
+#ifdef TRC_PEEL_STAGE
+      if (count > 0 && mu < muFrom && end > mu)
+      {
+        // Before the range: the volumes inside only move on (to its start, or the event).
+        float to = min(end, muFrom);
+//TRC::EachMember trcMemberPiece_v@(trcVolume@, m == @ && to == event, to, sf[@], sb[@]);
+        mu = to;
+      }
+#endif
+      if (count > 0 && end > mu)
+      {
+        float scale = 0.0;
+//TRC::EachMember used[@] = trcMemberPiece_v@(trcVolume@, m == @ && end == event, end, sf[@], sb[@]);
+//TRC::EachMember scale = alone == @ ? trcVolume@.ray.worldScale : scale;
+        // One volume inside here only after a walk that stopped at the bound (a sliver).
+        trcGroupMixture(used, sf, sb, (end - mu) * scale, color);
+        mixed = mixed || count > 1;
+      }
+      if (color.a >= in_groupEarlyTermination)
+      {
+        opaque = true;
+        finished = true;
+        break;
+      }
+      if (event >= muMax)
+      {
+        finished = true;
+        break;
+      }
+      mu = max(mu, event);
+      // Volume m moves on: into the next tet, or the tet it enters; or it takes its next entry
+      // (the one-volume traversal's peeling rules).
+      bool moved = true;
+//TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
+      if (!moved)
+      {
+        trcGroupNextEntry(head, m);
+      }
+    }
+  }
+}
+
+#ifdef TRC_PEEL_STAGE
+// Window depths `range` as mu (volume 0's ray: mu is the same for every volume at a point); an
+// empty range where it is.
+vec2 trcGroupRange(vec2 fragCoord, vec2 range)
+{
+  if (!(range.x < range.y))
+  {
+    return vec2(TRC_GROUP_FAR, -TRC_GROUP_FAR);
+  }
+  TrcRay_v0 ray = trcPixelRay_v0(fragCoord);
+  return vec2(trcLambdaFromWindowDepth_v0(ray, range.x), trcLambdaFromWindowDepth_v0(ray, range.y)) -
+    in_lambdaNear_v0;
+}
+#endif
+
 void main()
 {
   ivec2 pixel = trcBeginTile();
   bool inImage = all(lessThan(pixel, in_imageSize));
   uint head = trcTakeEntries(pixel, inImage);
   vec4 color = vec4(0.0);
+#ifdef TRC_PEEL_STAGE
+  vec4 backColor = vec4(0.0);
+  head = inImage && trcPeelPixelDone(pixel) ? 0u : head;
+#endif
   if (head != 0u)
   {
     vec2 fragCoord = vec2(pixel) + 0.5;
-    // Where opaque geometry or the far plane ends the ray, in mu.
-    float muMax = TRC_GROUP_FAR;
-//TRC::EachMember trcMemberStart_v@(fragCoord, trcVolume@);
-//TRC::EachMember muMax = min(muMax, trcVolume@.ray.lambdaMax - trcVolume@.lambdaNear);
-//TRC::EachMember trcVolume@.pending = trcNextEntry(head, @u, true, 0.0, 0.0, 0u, trcVolume@.entryLambda, trcVolume@.entryKey, trcVolume@.entryNear) != 0u;
     int steps = 0;
     uint layers = 0u;
     bool startedNear = false;
     bool opaque = false;
     bool stopped = false;
     bool mixed = false;
-    float mu = -TRC_GROUP_FAR;
-    int count = 0;  // volumes inside
-    int alone = -1; // the last of them
-    // After a walk that stopped at another volume's entry, at least one event before the next.
-    bool handedBack = false;
-    bool finished = false;
-    // The walks of lone volumes and the event loop are apart, each a tight loop of its own (a
-    // CPU implementation runs every branch of a loop body: walks inside the event loop made
-    // every event cost every volume's walk).
-    while (!finished)
+#ifdef TRC_PEEL_STAGE
+    // The front range, then the back one behind it, each a walk of its own from the ray's first
+    // entries (the back one crosses what lies before it without integrating it); the back one
+    // only while the front leaves the ray below the early termination.
+    vec4 ranges = trcPeelRanges(pixel);
+    vec2 front = trcGroupRange(fragCoord, ranges.xy);
+    vec2 back = trcGroupRange(fragCoord, ranges.zw);
+    if (front.x < front.y)
     {
-      if (count == 1 && !trcGroupWalkAlone(head, alone, mu, color, steps, stopped, handedBack))
-      {
-        opaque = color.a >= in_groupEarlyTermination;
-        break;
-      }
-      while (true)
-      {
-        // The nearest event: volume m leaves its tet or enters. Only m moves on.
-        int m = -1;
-        float event = TRC_GROUP_FAR;
-        count = 0;
-//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.exitAt - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
-        if (m < 0)
-        {
-          finished = true;
-          break;
-        }
-        if (count == 1 && !handedBack)
-        {
-          break; // one volume inside: its own walk
-        }
-        handedBack = false;
-        // Integrate up to the event (or the end of the ray) with the volumes inside, each from
-        // where it is to there in its own lambda (its own exit exactly, when the event is that).
-        float end = min(event, muMax);
-        if (count > 0 && end > mu)
-        {
-          bool used[TRC_GROUP_MEMBERS];
-          float sf[TRC_GROUP_MEMBERS];
-          float sb[TRC_GROUP_MEMBERS];
-          float scale = 0.0;
-//TRC::EachMember used[@] = trcMemberPiece_v@(trcVolume@, m == @ && end == event, end, sf[@], sb[@]);
-//TRC::EachMember scale = alone == @ ? trcVolume@.ray.worldScale : scale;
-          // One volume inside here only after a walk that stopped at the bound (a sliver).
-          trcGroupMixture(used, sf, sb, (end - mu) * scale, color);
-          mixed = mixed || count > 1;
-        }
-        if (color.a >= in_groupEarlyTermination)
-        {
-          opaque = true;
-          finished = true;
-          break;
-        }
-        if (event >= muMax)
-        {
-          finished = true;
-          break;
-        }
-        mu = max(mu, event);
-        // Volume m moves on: into the next tet, or the tet it enters; or it takes its next entry
-        // (the one-volume traversal's peeling rules).
-        bool moved = true;
-//TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
-        if (!moved)
-        {
-          trcGroupNextEntry(head, m);
-        }
-      }
+      trcGroupTraverse(head, fragCoord, front.x, front.y, color, steps, layers, startedNear,
+        opaque, stopped, mixed);
     }
+    if (!opaque && back.x < back.y)
+    {
+      trcGroupTraverse(head, fragCoord, back.x, back.y, backColor, steps, layers, startedNear,
+        opaque, stopped, mixed);
+    }
+#else
+    trcGroupTraverse(head, fragCoord, -TRC_GROUP_FAR, TRC_GROUP_FAR, color, steps, layers,
+      startedNear, opaque, stopped, mixed);
+#endif
     trcCountRay(steps, layers, startedNear, opaque, stopped);
     if (mixed)
     {
@@ -288,6 +357,9 @@ void main()
   if (inImage)
   {
     imageStore(in_colorImage, pixel, color);
+#ifdef TRC_PEEL_STAGE
+    imageStore(in_backColorImage, pixel, backColor);
+#endif
   }
   trcEndTile();
 }
