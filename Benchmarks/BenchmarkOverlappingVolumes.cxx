@@ -8,7 +8,7 @@
   See LICENSE for details.
 
 =========================================================================*/
-// Overlapping volumes (docs/mapper.md, "Overlapping volumes"): the frame time of 1, 2 and 4
+// Overlapping volumes (docs/mapper.md, "Overlapping volumes"): the frame time of 1, 2, 4 (or any)
 // copies of a mesh, each in its own vtkVolume with its own mapper, copy i shifted by
 // i * 3 % (--shift 0.03) of the mesh's diagonal along x and y and given its own transfer function
 // (the ramp with a unit distance growing with i), so that they overlap nearly everywhere and the
@@ -122,7 +122,7 @@ int main(int argc, char* argv[])
       std::string item;
       while (std::getline(list, item, ','))
       {
-        counts.push_back(std::min(4, std::max(1, std::atoi(item.c_str()))));
+        counts.push_back(std::max(1, std::atoi(item.c_str())));
       }
     }
     else if (!std::strcmp(argv[i], "--shift") && i + 1 < argc)

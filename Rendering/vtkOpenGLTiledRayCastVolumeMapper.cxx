@@ -345,7 +345,9 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateTextures(bool acti
     this->Fragment.ActivateTextures(activate);
   }
   this->Integration.ActivateTextures(this->IntegrationMode(), activate);
-  this->VisibleMesh.ActivateTextures(activate);
+  // In a group's frame every volume's boundary faces are active only while its entries are
+  // listed (ActivateEntryTextures): the units go to the volumes the traversal reads.
+  this->VisibleMesh.ActivateTextures(activate, this->Group.empty(), true);
   for (size_t i = 1; i < this->Group.size(); ++i)
   {
     this->Group[i]->ActivateGroupTextures(activate);

@@ -15,6 +15,7 @@
 
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTextureUnitManager.h"
 #include "vtkTiledRayCastResourceFreeCallback.h"
 #include "vtkTiledRayCastStatistics.h"
 #include "vtkTimerLog.h"
@@ -129,9 +130,35 @@ vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupMember()
 //------------------------------------------------------------------------------
 void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ActivateGroupTextures(bool activate)
 {
+  // What the traversal reads of this volume: its mesh, transfer function and visible bits (the
+  // Psi table is the first volume's; the boundary faces only while its entries are listed).
   this->MeshTextures.ActivateTextures(activate);
-  this->Integration.ActivateTextures(this->IntegrationMode(), activate);
-  this->VisibleMesh.ActivateTextures(activate);
+  this->Integration.ActivateTextures(this->IntegrationMode(), activate, false);
+  this->VisibleMesh.ActivateTextures(activate, false, true);
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::GetGroupTextureUnits()
+{
+  vtkOpenGLRenderWindow* window = this->Context.Window;
+  if (!window || !this->Context.ComputeSupported)
+  {
+    return 0;
+  }
+  // The units VTK has not handed out (the scene's own textures, VTK's depth peeling's, hold
+  // theirs), of which the group itself holds the scene's depth, the colour, the Psi table and
+  // one volume's boundary faces at a time; and the samplers a compute shader may read, of which
+  // the volumes share the scene's depth, the Psi table and the stage's depths.
+  vtkTextureUnitManager* units = window->GetTextureUnitManager();
+  int free = 0;
+  for (int i = 0; i < units->GetNumberOfTextureUnits(); ++i)
+  {
+    free += units->IsAllocated(i) ? 0 : 1;
+  }
+  const int stage = this->PeelStage();
+  return std::min(free - 4,
+    this->Context.MaxComputeTextureUnits -
+      vtkTiledRayCastGroupTraversal::GetSharedTextureUnits(stage));
 }
 
 //------------------------------------------------------------------------------

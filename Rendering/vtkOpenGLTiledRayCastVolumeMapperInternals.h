@@ -137,6 +137,11 @@ public:
   vtkTiledRayCastShaderComposition::Inputs GetGroupInputs() override;
   vtkTiledRayCastComputePipeline::Replacements GetGroupCode() override;
   vtkTiledRayCastComputePipeline::Member GetGroupMember() override;
+  int GetGroupTextureUnits() override;
+  void ActivateEntryTextures(bool activate) override
+  {
+    this->VisibleMesh.ActivateTextures(activate, true, false);
+  }
   void ActivateGroupTextures(bool activate) override;
   bool DrawGroup(vtkOpenGLRenderWindow* window, const int rays[2],
     const std::vector<vtkTiledRayCastGroupMember*>& members) override;

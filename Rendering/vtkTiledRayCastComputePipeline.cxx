@@ -221,7 +221,8 @@ bool vtkTiledRayCastComputePipeline::UpdateGroupPrograms(vtkOpenGLRenderWindow* 
   this->Group.Invalidate(); // until every program is built
   if (members.size() > static_cast<size_t>(vtkTiledRayCastGroupTraversal::MaximumMembers))
   {
-    error = "A group of overlapping volumes has at most 4 volumes.";
+    error = "A group of overlapping volumes has at most " +
+      std::to_string(vtkTiledRayCastGroupTraversal::MaximumMembers) + " volumes.";
     return false;
   }
   for (size_t k = 0; k < members.size(); ++k)
@@ -546,6 +547,11 @@ void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const
   // What both raster programs take: a group's volumes list their entries into one list, each
   // under its index, against the scene's depth the first volume holds (another volume's own
   // scene-depth texture is not active in a group's frame).
+  // A group's volumes' boundary faces are active only for their own listing.
+  if (group)
+  {
+    setup.ActivateEntryTextures(true);
+  }
   auto setUniforms = [&](vtkShaderProgram* p)
   {
     setup.SetFrameUniforms(p);
@@ -576,6 +582,10 @@ void vtkTiledRayCastComputePipeline::ListMemberEntries(const Frame& frame, const
   const bool clamped = vtkTiledRayCastComputeShader::SetDepthClamp(true);
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * member.NumberOfBoundaryFaces));
   vtkTiledRayCastComputeShader::SetDepthClamp(clamped);
+  if (group)
+  {
+    setup.ActivateEntryTextures(false);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -592,9 +602,9 @@ void vtkTiledRayCastComputePipeline::SetGroupUniforms(const Frame& frame)
     setup->SetIntegrationUniforms(member);
     // A lone volume's walk stops where the group's rays stop (the first volume's threshold).
     member->SetUniformf("in_earlyTerminationOpacity", frame.EarlyTerminationOpacity);
-    const std::string depth = "in_opaqueDepth_v" + std::to_string(k);
-    traversal->SetUniformi(depth.c_str(), frame.OpaqueDepthUnit);
   }
+  // The scene's depth, which the volumes share.
+  traversal->SetUniformi("in_opaqueDepth", frame.OpaqueDepthUnit);
   traversal->SetUniformf("in_groupEarlyTermination", frame.EarlyTerminationOpacity);
 }
 

@@ -86,6 +86,9 @@ public:
   virtual void SetCoverageUniforms(vtkShaderProgram* program) = 0;
   virtual void SetIntegrationUniforms(vtkShaderProgram* program) = 0;
   virtual void SetSampleScaleUniforms(vtkShaderProgram* program) = 0;
+  // The textures only the entry pass reads (a group's volume's boundary faces, active only
+  // while its entries are listed).
+  virtual void ActivateEntryTextures(bool) {}
 };
 
 class vtkTiledRayCastComputePipeline

@@ -67,6 +67,12 @@ bool vtkTiledRayCastContext::Check(vtkOpenGLRenderWindow* window)
   window->GetState()->vtkglGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &this->MaxTextureBufferSize);
   window->GetState()->vtkglGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &this->Max3DTextureSize);
   this->ComputeSupported = vtkTiledRayCastComputeShader::IsSupported(window);
+  this->MaxComputeTextureUnits = 0;
+  if (this->ComputeSupported)
+  {
+    window->GetState()->vtkglGetIntegerv(
+      GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &this->MaxComputeTextureUnits);
+  }
   this->Usable = true;
   return true;
 }

@@ -53,7 +53,8 @@ public:
   int MaxTextureSize = 0;
   int MaxTextureBufferSize = 0;
   int Max3DTextureSize = 0;
-  bool ComputeSupported = false; // OpenGL 4.3
+  bool ComputeSupported = false;  // OpenGL 4.3
+  int MaxComputeTextureUnits = 0; // a compute shader's samplers (the bound of a group's volumes)
 };
 
 #endif

@@ -21,7 +21,9 @@
 #include "vtkTiledRayCastVolumetricPeelRanges.h"
 #include "vtkTiledRayCastWalk.h"
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <sstream>
 
 namespace
@@ -31,13 +33,47 @@ bool IsIdentifierChar(char c)
   return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
 }
 
+// The uniforms every volume of a group shares, declared once: the scene's depth, and the partial
+// pre-integration table (the same function whatever the transfer function).
+const char* const SharedUniforms[] = { "in_opaqueDepth", "in_psiTable", "in_psiTableSize" };
+
+bool IsShared(const std::string& word)
+{
+  return std::find(std::begin(SharedUniforms), std::end(SharedUniforms), word) !=
+    std::end(SharedUniforms);
+}
+
 // The identifiers of one volume's code: its functions and types (trc*, Trc*), constants and
-// switches (TRC_*) and uniforms (in_*).
+// switches (TRC_*) and uniforms (in_*), but the shared uniforms.
 bool IsVolumeIdentifier(const std::string& word)
 {
   auto starts = [&word](const char* prefix)
   { return word.compare(0, std::char_traits<char>::length(prefix), prefix) == 0; };
-  return starts("trc") || starts("Trc") || starts("TRC_") || starts("in_");
+  return (starts("trc") || starts("Trc") || starts("TRC_") || starts("in_")) && !IsShared(word);
+}
+
+// `code` without its declarations of the shared uniforms (the first volume's code holds them).
+std::string WithoutSharedDeclarations(const std::string& code)
+{
+  std::istringstream in(code);
+  std::string out;
+  std::string line;
+  while (std::getline(in, line))
+  {
+    bool shared = false;
+    for (const char* name : SharedUniforms)
+    {
+      const std::string declared = std::string(" ") + name + ";";
+      shared = shared ||
+        (line.compare(0, 8, "uniform ") == 0 && line.size() >= declared.size() &&
+          line.compare(line.size() - declared.size(), declared.size(), declared) == 0);
+    }
+    if (!shared)
+    {
+      out += line + "\n";
+    }
+  }
+  return out;
 }
 } // anonymous namespace
 
@@ -128,7 +164,8 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
   const int count = static_cast<int>(members.size());
   if (count < 1 || count > MaximumMembers)
   {
-    error = "The traversal of overlapping volumes takes 1 to 4 volumes.";
+    error = "The traversal of overlapping volumes takes 1 to " + std::to_string(MaximumMembers) +
+      " volumes.";
     return false;
   }
   // Each volume's code: what its own traversal holds, then what the group needs of it.
@@ -149,6 +186,10 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
     }
     code += vtkTiledRayCastWalk;
     code += vtkTiledRayCastGroupMember;
+    if (k > 0)
+    {
+      code = WithoutSharedDeclarations(code);
+    }
     volumes += "// Volume " + std::to_string(k) + "\n" + Rename(code, "_v" + std::to_string(k));
   }
   std::string source = Expand(vtkTiledRayCastGroupTraversalCS, count);
@@ -201,7 +242,16 @@ bool vtkTiledRayCastGroupTraversal::Prepare(int stage, std::string& error)
   {
     if (k < this->NumberOfMembers)
     {
-      built.Members[k]->Map(program, "_v" + std::to_string(k), { "in_opaqueDepth" });
+      // The first volume sets the partial pre-integration table they share; the caller the
+      // scene's depth.
+      const std::vector<std::string> psi = { "in_psiTable", "in_psiTableSize" };
+      std::vector<std::string> shared = { "in_opaqueDepth" };
+      if (k > 0)
+      {
+        shared.insert(shared.end(), psi.begin(), psi.end());
+      }
+      built.Members[k]->Map(
+        program, "_v" + std::to_string(k), shared, k == 0 ? psi : std::vector<std::string>());
     }
     else
     {
@@ -210,6 +260,24 @@ bool vtkTiledRayCastGroupTraversal::Prepare(int stage, std::string& error)
   }
   built.Built = true;
   return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastGroupTraversal::GetTextureUnits(const Inputs& inputs)
+{
+  // Tet points and neighbours, points, cell scalars (texture buffers, each array split over as
+  // many as it needs), the transfer function and the visible tets.
+  return 2 * inputs.TetTextureBuffers + inputs.PointTextureBuffers +
+    (inputs.CellScalars ? inputs.TetTextureBuffers : 0) + 1 + (inputs.SkipEmptySpace ? 1 : 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkTiledRayCastGroupTraversal::GetSharedTextureUnits(int stage)
+{
+  // The scene's depth and the partial pre-integration table; VTK's depth peeling's textures at
+  // each stage (vtkTiledRayCastVolumetricPeelRanges.glsl).
+  const int peel[4] = { 0, 2, 3, 1 };
+  return 2 + (stage >= 0 && stage < 4 ? peel[stage] : 0);
 }
 
 //------------------------------------------------------------------------------

@@ -46,7 +46,10 @@ public:
   vtkTiledRayCastGroupTraversal();
   ~vtkTiledRayCastGroupTraversal();
 
-  static constexpr int MaximumMembers = 4;
+  // The most volumes one program is composed for (each volume's state is in registers: past
+  // about seven a GPU spills them). What a GPU takes is bounded first by its compute shader's
+  // samplers (GetTextureUnits).
+  static constexpr int MaximumMembers = 8;
   using Replacements = std::vector<std::pair<std::string, std::string>>;
 
   using Inputs = vtkTiledRayCastShaderComposition::Inputs;
@@ -81,13 +84,24 @@ public:
 
   /**
    * Volume k's uniforms in the program of `stage`, by their plain names, but for
-   * in_opaqueDepth: the volumes share the scene's depth, which the caller sets on the program as
-   * in_opaqueDepth_vk.
+   * in_opaqueDepth: the volumes share the scene's depth, which the caller sets on the program.
+   * They share the partial pre-integration table (in_psiTable, the same function for every
+   * transfer function) too, which volume 0 sets.
    */
   vtkShaderProgram* Member(int stage, int k);
 
   /**
-   * Identifiers of `code` given `suffix` (trc*, Trc*, TRC_* and in_*); public for the tests.
+   * The samplers (texture units) a program of `stage` takes for a volume of these inputs (its
+   * mesh's texture buffers, its transfer function, its visible tets), and those the volumes
+   * share (the scene's depth, the partial pre-integration table, the stage's depths): a GPU
+   * takes as many volumes in one traversal as its compute shader's texture units hold.
+   */
+  static int GetTextureUnits(const Inputs& inputs);
+  static int GetSharedTextureUnits(int stage);
+
+  /**
+   * Identifiers of `code` given `suffix` (trc*, Trc*, TRC_* and in_*), but for the uniforms the
+   * volumes share; public for the tests.
    */
   static std::string Rename(const std::string& code, const std::string& suffix);
 

@@ -97,9 +97,9 @@ public:
   /// Bytes the mode's textures hold on the GPU.
   vtkIdType GetBytes() const { return this->Bytes; }
 
-  void ActivateTextures(int mode, bool activate)
+  void ActivateTextures(int mode, bool activate, bool psi = true)
   {
-    this->Textures.ActivateTextures(mode, activate);
+    this->Textures.ActivateTextures(mode, activate, psi);
   }
 
   /**

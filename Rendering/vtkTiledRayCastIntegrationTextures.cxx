@@ -104,13 +104,16 @@ bool vtkTiledRayCastIntegrationTextures::UpdateTable(vtkOpenGLRenderWindow* wind
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastIntegrationTextures::ActivateTextures(int mode, bool activate)
+void vtkTiledRayCastIntegrationTextures::ActivateTextures(int mode, bool activate, bool psi)
 {
   std::vector<vtkTextureObject*> textures;
   if (mode == vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION)
   {
     textures.push_back(this->NodeTexture);
-    textures.push_back(this->PsiTexture);
+    if (psi)
+    {
+      textures.push_back(this->PsiTexture);
+    }
   }
   else
   {

@@ -63,9 +63,10 @@ public:
     int mode, vtkIdType& uploaded, std::string& error);
 
   /**
-   * The textures of `mode`.
+   * The textures of `mode` (partial pre-integration: the nodes, and the Psi table unless `psi`
+   * is false: a group's volumes share the first one's).
    */
-  void ActivateTextures(int mode, bool activate);
+  void ActivateTextures(int mode, bool activate, bool psi = true);
 
   /**
    * The uniforms of `mode`'s textures: for partial pre-integration the node list (and its node

@@ -39,8 +39,8 @@ void vtkTiledRayCastMemberUniforms::Unmap()
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastMemberUniforms::Map(
-  vtkShaderProgram* program, const std::string& suffix, const std::vector<std::string>& shared)
+void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::string& suffix,
+  const std::vector<std::string>& shared, const std::vector<std::string>& plain)
 {
   this->Unmap();
   if (!program || program->GetHandle() == 0)
@@ -68,7 +68,16 @@ void vtkTiledRayCastMemberUniforms::Map(
     {
       name.resize(bracket);
     }
-    if (location < 0 || name.size() <= suffix.size() ||
+    if (location < 0)
+    {
+      continue;
+    }
+    if (std::find(plain.begin(), plain.end(), name) != plain.end())
+    {
+      this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), static_cast<int>(location)));
+      continue;
+    }
+    if (name.size() <= suffix.size() ||
       name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
     {
       continue;
@@ -79,6 +88,15 @@ void vtkTiledRayCastMemberUniforms::Map(
       continue;
     }
     this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), static_cast<int>(location)));
+  }
+  // The shared ones are known as absent, so that a setter does not look for them in the program
+  // (where the group's own declaration of them would be found).
+  for (const std::string& name : shared)
+  {
+    if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
+    {
+      this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), -1));
+    }
   }
   this->Handle = static_cast<int>(handle);
   this->Linked = true;

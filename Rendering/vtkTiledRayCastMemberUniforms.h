@@ -41,12 +41,14 @@ public:
   vtkTypeMacro(vtkTiledRayCastMemberUniforms, vtkShaderProgram);
 
   /**
-   * Stand for the uniforms of `program` whose names end with `suffix` (before any "[0]").
+   * Stand for the uniforms of `program` whose names end with `suffix` (before any "[0]"), and
+   * for those named in `plain` as they are (uniforms the volumes share, which this volume sets).
    * Plain names that have no suffixed uniform, and the `shared` ones (which the group sets
    * itself), are not set: the setters return false without a GL call.
    */
   void Map(vtkShaderProgram* program, const std::string& suffix,
-    const std::vector<std::string>& shared = std::vector<std::string>());
+    const std::vector<std::string>& shared = std::vector<std::string>(),
+    const std::vector<std::string>& plain = std::vector<std::string>());
 
   /**
    * Forget the program (it is being rebuilt or released).

@@ -102,10 +102,10 @@ std::string vtkTiledRayCastVisibleMesh::GetShaderDefinitions() const
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastVisibleMesh::ActivateTextures(bool activate)
+void vtkTiledRayCastVisibleMesh::ActivateTextures(bool activate, bool faces, bool bits)
 {
-  vtkTextureObject* textures[2] = { this->FaceTexture,
-    this->GetSkipsEmptySpace() ? this->BitTexture.GetPointer() : nullptr };
+  vtkTextureObject* textures[2] = { faces ? this->FaceTexture.GetPointer() : nullptr,
+    bits && this->GetSkipsEmptySpace() ? this->BitTexture.GetPointer() : nullptr };
   for (vtkTextureObject* t : textures)
   {
     if (t && activate)

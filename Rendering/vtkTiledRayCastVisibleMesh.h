@@ -70,7 +70,11 @@ public:
   /// Seconds the last classification took (0 when nothing changed).
   double GetBuildTime() const { return this->EmptySpace.GetBuildTime(); }
 
-  void ActivateTextures(bool activate);
+  /**
+   * The faces rays enter by (`faces`, for the entry pass) and the visible bits (`bits`, for the
+   * traversal, when skipping empty space).
+   */
+  void ActivateTextures(bool activate, bool faces = true, bool bits = true);
   void SetUniforms(vtkShaderProgram* program);
   void ReleaseGraphicsResources(vtkWindow* window);
 

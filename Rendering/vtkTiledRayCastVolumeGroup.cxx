@@ -40,11 +40,33 @@ struct RendererFrame
   // Inside VTK's depth peeling, which draws every volume in each of its stages: drawn in the
   // current stage, until the volume's own draw in that stage passes.
   std::set<vtkVolume*> DrawnInStage;
+  // The first volume of a group drawn in this frame (or stage), until its own next draw: no
+  // other volume's group takes it again.
+  std::set<vtkVolume*> Leaders;
 };
 std::map<vtkRenderer*, RendererFrame>& Frames()
 {
   static std::map<vtkRenderer*, RendererFrame> frames;
   return frames;
+}
+
+void RendererEvent(vtkObject* caller, unsigned long event, void*, void*);
+
+// The marks of `renderer`'s current frame, cleared at its next StartEvent.
+RendererFrame& FrameOf(vtkRenderer* renderer)
+{
+  RendererFrame& frame = Frames()[renderer];
+  if (!frame.Renderer)
+  {
+    // A renderer seen for the first time (or a new one at a deleted one's address).
+    frame = RendererFrame();
+    frame.Renderer = renderer;
+    vtkNew<vtkCallbackCommand> callback;
+    callback->SetCallback(RendererEvent);
+    renderer->AddObserver(vtkCommand::StartEvent, callback);
+    renderer->AddObserver(vtkCommand::DeleteEvent, callback);
+  }
+  return frame;
 }
 
 void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
@@ -63,6 +85,7 @@ void RendererEvent(vtkObject* caller, unsigned long event, void*, void*)
   {
     it->second.Drawn.clear();
     it->second.DrawnInStage.clear();
+    it->second.Leaders.clear();
   }
 }
 
@@ -231,7 +254,7 @@ std::vector<vtkTiledRayCastVolumeGroup::Candidate> vtkTiledRayCastVolumeGroup::S
   if (group.size() > static_cast<size_t>(MaximumVolumes))
   {
     me.Member->WarnGroupOnce(Warning(std::to_string(group.size()) +
-      " volumes overlap, directly or through others, and one traversal takes at most " +
+      " volumes overlap, directly or through others, and one traversal is composed for at most " +
       std::to_string(MaximumVolumes)));
     return alone;
   }
@@ -255,8 +278,15 @@ int vtkTiledRayCastVolumeGroup::Render(
   }
   std::vector<vtkTiledRayCastGroupMember*> members;
   std::vector<vtkVolume*> volumes;
+  // One traversal takes the volumes whose textures the free texture units hold.
+  const int limit = first->GetGroupTextureUnits();
+  int units = 0;
   for (const Candidate& c : group)
   {
+    if (c.Member != first && Marked(renderer, c.Volume))
+    {
+      continue; // drawn already in this frame (or stage), by a group that took it
+    }
     if (c.Member != first && !c.Member->PrepareGroupFrame(renderer, c.Volume, window, false, rays))
     {
       continue; // it draws nothing: its own Render() says why
@@ -271,6 +301,21 @@ int vtkTiledRayCastVolumeGroup::Render(
       }
       continue;
     }
+    const int needs = vtkTiledRayCastGroupTraversal::GetTextureUnits(c.Member->GetGroupInputs());
+    if (units + needs > limit)
+    {
+      if (c.Member == first)
+      {
+        return 0;
+      }
+      c.Member->WarnGroupOnce(Warning("the " + std::to_string(members.size()) +
+        " volumes before it fill one traversal: its compute shader has " + std::to_string(limit) +
+        " texture units for the volumes' own textures here, and this volume takes " +
+        std::to_string(needs) + " (its mesh's texture buffers, transfer function and visible " +
+        "tets)"));
+      continue;
+    }
+    units += needs;
     members.push_back(c.Member);
     volumes.push_back(c.Volume);
   }
@@ -280,6 +325,7 @@ int vtkTiledRayCastVolumeGroup::Render(
   }
   const int count = static_cast<int>(members.size());
   const bool stage = vtkTiledRayCastVolumetricPeel::FindPass(group.front().Volume) != nullptr;
+  FrameOf(renderer).Leaders.insert(volumes[0]);
   for (size_t i = 1; i < members.size(); ++i)
   {
     MarkDrawn(renderer, volumes[i], stage);
@@ -291,19 +337,18 @@ int vtkTiledRayCastVolumeGroup::Render(
 //------------------------------------------------------------------------------
 void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* volume, bool stage)
 {
-  auto& frames = Frames();
-  RendererFrame& frame = frames[renderer];
-  if (!frame.Renderer)
-  {
-    // A renderer seen for the first time (or a new one at a deleted one's address).
-    frame.Renderer = renderer;
-    frame.Drawn.clear();
-    vtkNew<vtkCallbackCommand> callback;
-    callback->SetCallback(RendererEvent);
-    renderer->AddObserver(vtkCommand::StartEvent, callback);
-    renderer->AddObserver(vtkCommand::DeleteEvent, callback);
-  }
+  RendererFrame& frame = FrameOf(renderer);
   (stage ? frame.DrawnInStage : frame.Drawn).insert(volume);
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::Marked(vtkRenderer* renderer, vtkVolume* volume)
+{
+  auto& frames = Frames();
+  auto it = frames.find(renderer);
+  return it != frames.end() && it->second.Renderer == renderer &&
+    (it->second.Drawn.count(volume) > 0 || it->second.DrawnInStage.count(volume) > 0 ||
+      it->second.Leaders.count(volume) > 0);
 }
 
 //------------------------------------------------------------------------------
@@ -315,6 +360,9 @@ bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volu
   {
     return false;
   }
+  // A group's first volume is drawn again (its next stage of VTK's depth peeling): another
+  // group may take it from then on.
+  it->second.Leaders.erase(volume);
   // A mark of the current stage of VTK's depth peeling serves the volume's draw in that stage.
   return it->second.Drawn.count(volume) > 0 || it->second.DrawnInStage.erase(volume) > 0;
 }

@@ -14,8 +14,8 @@
  *
  * VTK draws a renderer's volumes one after another; where two overlap, compositing one over
  * the other is wrong. Volumes of this module's mappers (compute pipeline, composite blending)
- * whose world bounds overlap, directly or through others, form a group of up to four: the
- * first of them whose mapper VTK calls in a frame draws them all in one traversal
+ * whose world bounds overlap, directly or through others, form a group: the first of them whose
+ * mapper VTK calls in a frame draws them all in one traversal
  * (vtkTiledRayCastGroupTraversal: each volume's entries in one list, its segments merged in
  * depth order with the others', their mixture integrated where they overlap), and marks the
  * others drawn for this frame of the renderer, so that their mappers draw nothing. Each
@@ -23,8 +23,11 @@
  * only what changed).
  *
  * What a group does not take (the fragment pipeline, other blend modes or integrations, the
- * paper's layout, clipping planes, shading, gradient opacity, more than four volumes) is
- * drawn on its own as before, with one warning per mapper.
+ * paper's layout, clipping planes, shading, gradient opacity) is drawn on its own as before,
+ * with one warning per mapper. One traversal takes as many volumes as the GPU's compute shader
+ * has texture units for (vtkTiledRayCastGroupTraversal::GetTextureUnits: 7 volumes of one
+ * texture buffer per array in the 32 units of an H100 or of llvmpipe), up to eight; the
+ * volumes past that are drawn on their own, each with a warning.
  *
  * Inside VTK's dual depth peeling, which draws every volume in each of its stages, the group is
  * drawn in each stage between the stage's depths, and its other volumes are marked drawn for
@@ -77,6 +80,13 @@ public:
   virtual vtkTiledRayCastComputePipeline::Member GetGroupMember() = 0;
 
   /**
+   * The texture units the volumes of a group drawn by this volume's mapper may take, all
+   * together (vtkTiledRayCastGroupTraversal::GetTextureUnits each): what one traversal's compute
+   * shader may read and what the window has free, less what the group shares.
+   */
+  virtual int GetGroupTextureUnits() = 0;
+
+  /**
    * The volume's textures (mesh, transfer function, visible tets), for the group's programs.
    */
   virtual void ActivateGroupTextures(bool activate) = 0;
@@ -112,7 +122,7 @@ public:
 class vtkTiledRayCastVolumeGroup
 {
 public:
-  static constexpr int MaximumVolumes = 4;
+  static constexpr int MaximumVolumes = vtkTiledRayCastGroupTraversal::MaximumMembers;
 
   struct Candidate
   {
@@ -175,6 +185,8 @@ public:
 private:
   // Drawn in this frame of the renderer, or only in this stage of VTK's depth peeling (`stage`).
   static void MarkDrawn(vtkRenderer* renderer, vtkVolume* volume, bool stage = false);
+  // Whether it is marked so (the mark is not taken).
+  static bool Marked(vtkRenderer* renderer, vtkVolume* volume);
 };
 
 #endif

@@ -17,10 +17,16 @@
 const uint TRC_MEMBER_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 
 // The volume on one ray: inside tet `tet` (entered through face `entry`, TRC_NO_FACE from the
-// near plane) from lambda `from` to its exit `exitAt` through exitFace (the tet's field and
-// neighbour words read), or waiting for its next entry at entryLambda (pending), or neither
-// (done). Lambda is the volume's own; mu = lambda - lambdaNear is the same for every volume at
-// the same point (the volume matrices are affine).
+// near plane), at lambda `from`, where its current span begins; or waiting for its next entry at
+// entryLambda (pending), or neither (done). Lambda is the volume's own; mu = lambda - lambdaNear
+// is the same for every volume at the same point (the volume matrices are affine).
+//
+// A span is where the volume's attenuation and colour are linear along the ray: within its tet,
+// between two nodes of its transfer function (interval `node` to node + 1). It ends at
+// spanEnd: the tet's exit (exitAt, through exitFace), or where the scalar reaches the next node.
+// Over the span the attenuation is tau + tauRate (lambda - from) and the colour color +
+// colorRate (lambda - from): a piece of the ray where several volumes are inside sums theirs
+// with no read of the transfer function, and only the volume whose span ends moves on.
 struct TrcMember
 {
   TrcRay ray;
@@ -32,8 +38,14 @@ struct TrcMember
   float from;
   float exitAt;
   int exitFace;
-  vec4 field;
-  uvec4 words;
+  float scalar;     // the scalar at `from`
+  float scalarRate; // per unit lambda, in this tet
+  int node; // the span's interval: the transfer function's node at or below the scalar (-1 below)
+  float spanEnd;
+  float tau;
+  float tauRate;
+  vec3 color;
+  vec3 colorRate;
   int layerSteps;
   int stalls;
   float entryLambda;
@@ -41,7 +53,6 @@ struct TrcMember
   bool entryNear;
   float lastLambda; // the layer entered last, for the peeling rules
   uint lastKey;
-  int node; // the transfer function's node at or below its scalar where the last piece ended
 };
 
 // The volume's ray through a pixel, before its first entry; every word defined before it is read
@@ -60,8 +71,14 @@ void trcMemberStart(vec2 fragCoord, out TrcMember s)
   s.from = 0.0;
   s.exitAt = 0.0;
   s.exitFace = 0;
-  s.field = vec4(0.0);
-  s.words = uvec4(0u);
+  s.scalar = 0.0;
+  s.scalarRate = 0.0;
+  s.node = -2; // none yet
+  s.spanEnd = 0.0;
+  s.tau = 0.0;
+  s.tauRate = 0.0;
+  s.color = vec3(0.0);
+  s.colorRate = vec3(0.0);
   s.layerSteps = 0;
   s.stalls = 0;
   s.entryLambda = 0.0;
@@ -69,33 +86,104 @@ void trcMemberStart(vec2 fragCoord, out TrcMember s)
   s.entryNear = false;
   s.lastLambda = 0.0;
   s.lastKey = 0u;
-  s.node = -2; // none yet
 }
 
-// Where the ray leaves its tet from s.from (the walk's arithmetic): s.exitAt and s.exitFace, the
-// tet's field and neighbour words.
-void trcMemberExit(inout TrcMember s)
+// trcFindNode(s), where `hint` is likely to be the answer (the node of the volume's last span: a
+// span seldom crosses a node, so the next starts there): checked with two independent reads
+// instead of a binary search's dependent ones, else searched.
+int trcMemberFindNode(float s, int hint)
+{
+  int n = in_transferFunctionNodes;
+  bool above = hint < 0 || trcNodeScalar(max(hint, 0)) <= s;
+  bool under = hint + 1 >= n || s < trcNodeScalar(min(hint + 1, n - 1));
+  return hint >= -1 && hint < n && above && under ? hint : trcFindNode(s);
+}
+
+// The span from s.from, where the scalar is s.scalar (the interval it goes into: going down from
+// a node, the one below it), up to the next node or the tet's exit. A tet touching a non-finite
+// scalar is transparent, as in trcIntegrate.
+void trcMemberSpan(inout TrcMember s)
+{
+  float s0 = s.scalar;
+  float r = s.scalarRate;
+  s.spanEnd = s.exitAt;
+  if (isnan(s0) || isinf(s0) || isnan(r) || isinf(r))
+  {
+    s.tau = 0.0;
+    s.tauRate = 0.0;
+    s.color = vec3(0.0);
+    s.colorRate = vec3(0.0);
+    return;
+  }
+  int n = in_transferFunctionNodes;
+  int lo = trcMemberFindNode(s0, s.node);
+  while (r < 0.0 && lo >= 0 && trcNodeScalar(lo) >= s0)
+  {
+    --lo;
+  }
+  s.node = lo;
+  int first = clamp(lo, 0, n - 1);
+  int second = lo < 0 ? first : min(lo + 1, n - 1);
+  // A node's scalar and attenuation are one texel, its colour the next.
+  vec2 a = texelFetch(in_transferFunction, 2 * first).xy;
+  vec2 b = texelFetch(in_transferFunction, 2 * second).xy;
+  vec3 ca = texelFetch(in_transferFunction, 2 * first + 1).rgb;
+  vec3 cb = texelFetch(in_transferFunction, 2 * second + 1).rgb;
+  float ds = b.x - a.x;
+  float w = ds > 0.0 ? clamp((s0 - a.x) / ds, 0.0, 1.0) : 1.0;
+  float wRate = ds > 0.0 ? r / ds : 0.0;
+  s.tau = mix(a.y, b.y, w);
+  s.tauRate = (b.y - a.y) * wRate;
+  s.color = mix(ca, cb, w);
+  s.colorRate = (cb - ca) * wRate;
+  // Where the scalar reaches the interval's far node (going up, the node above; down, the one
+  // below), if before the exit.
+  bool up = r > 0.0 && lo < n - 1;
+  bool down = r < 0.0 && lo >= 0;
+  if (up || down)
+  {
+    float toward = up ? b.x : a.x;
+    s.spanEnd = min(s.exitAt, s.from + max((toward - s0) / r, 0.0));
+  }
+}
+
+// The volume at s.from in tet s.tet (entered through s.entry): where the ray leaves it, its
+// scalar along the ray, and its first span there.
+void trcMemberEnterTet(inout TrcMember s)
 {
   TrcTet t;
   trcLoadTet(s.tet, t);
-  s.words = trcLoadNeighborWords(s.tet);
   float exitStep = trcExitStep(t, s.ray, s.from, s.entry, s.exitFace);
-  s.field = t.field;
   s.exitAt = s.from + max(exitStep, 0.0);
   s.stalls = s.exitAt > s.from ? 0 : s.stalls + 1;
+  s.scalar = dot(t.field.xyz, s.ray.origin + s.from * s.ray.dir) + t.field.w;
+  s.scalarRate = dot(t.field.xyz, s.ray.dir);
+  trcMemberSpan(s);
 }
 
-// The volume's event: it enters the layer of its pending entry, or leaves its tet, into the
-// neighbour behind its exit face. False where it leaves its layer there (the ray left the
-// volume, or its visible part, stalled, or took maximumSteps in the layer): the traversal then
-// takes its next entry. The exit of the tet it is in is read once, for both cases.
+// The volume's event: its span ends at a node (the next span, in the same tet), it enters the
+// layer of its pending entry, or it leaves its tet, into the neighbour behind its exit face.
+// False where it leaves its layer there (the ray left the volume, or its visible part, stalled,
+// or took maximumSteps in the layer): the traversal then takes its next entry.
 bool trcMemberEvent(inout TrcMember s, int maximumSteps, inout int steps, inout uint layers,
   inout bool startedNear, inout bool stopped)
 {
+  if (s.inside && s.spanEnd < s.exitAt)
+  {
+    // The scalar reaches a node: exactly its value from here, the interval beyond it next.
+    bool up = s.scalarRate > 0.0;
+    int crossed = up ? s.node + 1 : s.node;
+    s.scalar = trcNodeScalar(crossed);
+    s.from = s.spanEnd;
+    s.node = crossed;
+    trcMemberSpan(s);
+    return true;
+  }
   if (s.inside)
   {
     s.from = s.exitAt;
-    uint next = trcNeighborTet(s.words, s.exitFace);
+    uvec4 words = trcLoadNeighborWords(s.tet);
+    uint next = trcNeighborTet(words, s.exitFace);
 #ifdef TRC_SKIP_EMPTY_SPACE
     bool leaves = next == TRC_NO_NEIGHBOR || !trcTetVisible(next);
 #else
@@ -107,7 +195,7 @@ bool trcMemberEvent(inout TrcMember s, int maximumSteps, inout int steps, inout 
       s.inside = false;
       return false;
     }
-    s.entry = trcNeighborFace(s.words, s.exitFace);
+    s.entry = trcNeighborFace(words, s.exitFace);
     s.tet = next;
     ++s.layerSteps;
   }
@@ -126,15 +214,28 @@ bool trcMemberEvent(inout TrcMember s, int maximumSteps, inout int steps, inout 
     s.stalls = 0;
   }
   ++steps;
-  trcMemberExit(s);
+  trcMemberEnterTet(s);
   return true;
+}
+
+// The volume on to `lambda` within its span (where the ray is), its span's values with it.
+void trcMemberAdvance(inout TrcMember s, float lambda)
+{
+  float d = lambda - s.from;
+  if (d > 0.0)
+  {
+    s.scalar += s.scalarRate * d;
+    s.tau += s.tauRate * d;
+    s.color += s.colorRate * d;
+    s.from = lambda;
+  }
 }
 
 // The volume alone on the ray (inside, every other volume ahead of it or done) up to mu = bound
 // (the nearest entry of another): its own walk from where it is, the one-volume traversal's
 // loop and arithmetic, so that it is integrated as when it is drawn alone. False where the ray
 // ends (opaque, or at the end of the volume's ray). Else it is either inside at the bound (its
-// exit read) or out of its layer at s.from (the traversal takes its next entry).
+// span there found) or out of its layer at s.from (the traversal takes its next entry).
 bool trcMemberWalk(inout TrcMember s, float bound, int maximumSteps, inout vec4 color,
   inout int steps, inout bool stopped)
 {
@@ -150,14 +251,14 @@ bool trcMemberWalk(inout TrcMember s, float bound, int maximumSteps, inout vec4 
   int before = steps;
   int status =
     trcWalk(ray, max(maximumSteps - s.layerSteps + 1, 1), s.tet, lambda, s.entry, s.stalls, color, steps);
-  // The tet it was in was counted when its exit was read.
+  // The tet it was in was counted when it entered it.
   int taken = steps - before - 1;
   steps -= 1;
   s.layerSteps += taken;
   s.from = lambda;
   if (status == TRC_DONE_DEPTH && clamped)
   {
-    trcMemberExit(s);
+    trcMemberEnterTet(s);
     return true;
   }
   if (status == TRC_WAITING || status == TRC_ACTIVE)
@@ -169,112 +270,19 @@ bool trcMemberWalk(inout TrcMember s, float bound, int maximumSteps, inout vec4 
   return false;
 }
 
-// A piece of the ray up to mu = end where the volumes inside are integrated together: the
-// volume's scalar at both ends (from where it is to `end`, or to its own exit exactly when the
-// event is that), and it moves there. False where it is not inside.
-bool trcMemberPiece(inout TrcMember s, bool toExit, float end, out float sf, out float sb)
+// The volume's share of a piece of the ray from lambda a to b (both within its span), where its
+// attenuation and colour are linear: attenuation ta at a to tb at b, emission (attenuation
+// times colour) e0 + e1 v + e2 v^2 for v from 0 to 1 over the piece (trcCompositeMixture).
+void trcMemberPart(TrcMember s, float a, float b, inout float ta, inout float tb,
+  inout vec3 e0, inout vec3 e1, inout vec3 e2)
 {
-  sf = 0.0;
-  sb = 0.0;
-  if (!s.inside)
-  {
-    return false;
-  }
-  float to = toExit ? s.exitAt : min(s.exitAt, end + s.lambdaNear);
-  to = max(to, s.from);
-  sf = dot(s.field.xyz, s.ray.origin + s.from * s.ray.dir) + s.field.w;
-  sb = dot(s.field.xyz, s.ray.origin + to * s.ray.dir) + s.field.w;
-  s.from = to;
-  // A tet touching a non-finite scalar is transparent, as in trcIntegrate.
-  return !isnan(sf) && !isnan(sb) && !isinf(sf) && !isinf(sb);
-}
-
-int trcMemberNodes()
-{
-  return in_transferFunctionNodes;
-}
-
-// trcFindNode(s), where `hint` is likely to be the answer (the node where the volume's last piece
-// ended: a piece seldom crosses a node, so the next starts there): checked with two independent
-// reads instead of a binary search's dependent ones, else searched.
-int trcMemberFindNode(float s, int hint)
-{
-  int n = in_transferFunctionNodes;
-  bool above = hint < 0 || trcNodeScalar(max(hint, 0)) <= s;
-  bool under = hint + 1 >= n || s < trcNodeScalar(min(hint + 1, n - 1));
-  return hint >= -1 && hint < n && above && under ? hint : trcFindNode(s);
-}
-
-// The mixture of overlapping volumes (trcGroupMixture): over a piece where the volume's scalar
-// goes linearly from sf to sb, u from 0 to 1, `next` is the next node its scalar crosses
-// (going up, the first above sf; going down, the last below; constant, the node at or below).
-int trcMemberFirstNode(float sf, float sb, int hint)
-{
-  int below = trcMemberFindNode(sf, hint);
-  if (sb > sf)
-  {
-    return below + 1;
-  }
-  return sb < sf && below >= 0 && trcNodeScalar(below) >= sf ? below - 1 : below;
-}
-
-// Where on the piece (u) the scalar crosses node `next`, or 1.
-float trcMemberCrossing(bool used, float sf, float sb, int next)
-{
-  float ds = sb - sf;
-  bool crosses = (ds > 0.0 && next < in_transferFunctionNodes) || (ds < 0.0 && next >= 0);
-  return used && crosses ? (trcNodeScalar(next) - sf) / ds : 1.0;
-}
-
-// The volume's share of the part [u0, u1] of the piece, where its attenuation and colour are
-// linear: attenuation ta at u0 to tb at u1, emission (attenuation times colour)
-// e0 + e1 v + e2 v^2 for v from 0 to 1 over the part. Both ends lie between the same two nodes:
-// they are read once (trcEvaluate's cases: below the first node or from the last on, that
-// node's values).
-void trcMemberMixturePart(bool used, float sf, float sb, int next, float u0, float u1,
-  inout float ta, inout float tb, inout vec3 e0, inout vec3 e1, inout vec3 e2)
-{
-  if (!used)
-  {
-    return;
-  }
-  float ds = sb - sf;
-  int below = ds > 0.0 ? next - 1 : next;
-  int first = clamp(below, 0, in_transferFunctionNodes - 1);
-  int second = below < 0 ? first : min(below + 1, in_transferFunctionNodes - 1);
-  float s0 = trcNodeScalar(first);
-  float s1 = trcNodeScalar(second);
-  vec3 n0;
-  vec3 n1;
-  float t0;
-  float t1;
-  trcNode(first, n0, t0);
-  trcNode(second, n1, t1);
-  float w0 = s1 > s0 ? clamp((sf + u0 * ds - s0) / (s1 - s0), 0.0, 1.0) : 1.0;
-  float w1 = s1 > s0 ? clamp((sf + u1 * ds - s0) / (s1 - s0), 0.0, 1.0) : 1.0;
-  vec3 c0 = mix(n0, n1, w0);
-  vec3 c1 = mix(n0, n1, w1);
-  float a0 = mix(t0, t1, w0);
-  float a1 = mix(t0, t1, w1);
-  ta += a0;
-  tb += a1;
-  e0 += a0 * c0;
-  e1 += a0 * (c1 - c0) + (a1 - a0) * c0;
-  e2 += (a1 - a0) * (c1 - c0);
-}
-
-// The next node once the part ending at u1 is done (past every node at u1).
-int trcMemberPassNodes(bool used, float sf, float sb, int next, float u1)
-{
-  float ds = sb - sf;
-  while (used && ds > 0.0 && next < in_transferFunctionNodes &&
-    (trcNodeScalar(next) - sf) / ds <= u1)
-  {
-    ++next;
-  }
-  while (used && ds < 0.0 && next >= 0 && (trcNodeScalar(next) - sf) / ds <= u1)
-  {
-    --next;
-  }
-  return next;
+  float t0 = max(s.tau + s.tauRate * (a - s.from), 0.0);
+  float t1 = max(s.tau + s.tauRate * (b - s.from), 0.0);
+  vec3 c0 = s.color + s.colorRate * (a - s.from);
+  vec3 c1 = s.color + s.colorRate * (b - s.from);
+  ta += t0;
+  tb += t1;
+  e0 += t0 * c0;
+  e1 += t0 * (c1 - c0) + (t1 - t0) * c0;
+  e2 += (t1 - t0) * (c1 - c0);
 }

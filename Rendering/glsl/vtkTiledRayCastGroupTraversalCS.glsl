@@ -14,10 +14,15 @@
 // ahead or done, that volume walks alone with its own walk (trcWalk, the
 // one-volume traversal's loop and arithmetic) up to the nearest entry of
 // another, so that a ray sees what it sees when that volume is drawn alone.
-// Where two or more are inside, the ray goes from event to event (a volume
-// leaves its tet, or a volume enters), integrating each piece as their
-// mixture (trcGroupMixture, docs/design.md "Overlapping media"). Each volume
-// takes its entries with the one-volume traversal's rules (trcNextEntry,
+// Where two or more are inside, the ray goes from event to event (a volume's
+// span ends: it crosses a node of its transfer function or leaves its tet; or
+// a volume enters), integrating each piece as their mixture
+// (trcCompositeMixture, docs/design.md "Overlapping media"). Within a span a
+// volume's attenuation and colour are linear (vtkTiledRayCastGroupMember.glsl):
+// an event reads only the moving volume's mesh and transfer function, and a
+// piece sums every inside volume's linear terms from registers, so the work
+// per event does not grow with the other volumes' reads. Each volume takes its
+// entries with the one-volume traversal's rules (trcNextEntry,
 // vtkTiledRayCastEntryList.glsl).
 //
 // Each volume's state is a global of its own (trcVolume0, ...), never indexed
@@ -104,48 +109,8 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
 // Each volume's state along this invocation's ray (vtkTiledRayCastGroupMember.glsl's TrcMember).
 //TRC::EachMember TrcMember_v@ trcVolume@;
 
-// Where two or more volumes are inside, over a piece of world length d, volume m's scalar going
-// linearly from sf[m] to sb[m] where used[m] (inside, its scalars finite): the mixture,
-// attenuation sum tau_i, emission sum tau_i c_i (docs/design.md, "Overlapping media"). The
-// piece is cut at every node of every volume's transfer function that its scalar crosses;
-// between cuts each volume's attenuation and colour are linear, the sums are linear and
-// quadratic (trcCompositeMixture). Each volume's code appears once (a line per volume), never
-// behind a loop over volumes, and the arrays are indexed by constants only.
-// Each volume's node where its piece ends is left in its state, to start the next piece's
-// search from.
-void trcGroupMixture(bool used[TRC_GROUP_MEMBERS], float sf[TRC_GROUP_MEMBERS],
-  float sb[TRC_GROUP_MEMBERS], float d, inout vec4 color)
-{
-  int next[TRC_GROUP_MEMBERS];
-  int crossings = 0;
-//TRC::EachMember next[@] = used[@] ? trcMemberFirstNode_v@(sf[@], sb[@], trcVolume@.node) : -1;
-//TRC::EachMember crossings += used[@] ? trcMemberNodes_v@() : 0;
-  float u0 = 0.0;
-  for (int part = 0; part <= crossings && u0 < 1.0; ++part)
-  {
-    float u1 = 1.0;
-//TRC::EachMember u1 = min(u1, trcMemberCrossing_v@(used[@], sf[@], sb[@], next[@]));
-    u1 = max(u1, u0);
-    float ta = 0.0;
-    float tb = 0.0;
-    vec3 e0 = vec3(0.0);
-    vec3 e1 = vec3(0.0);
-    vec3 e2 = vec3(0.0);
-//TRC::EachMember trcMemberMixturePart_v@(used[@], sf[@], sb[@], next[@], u0, u1, ta, tb, e0, e1, e2);
-    trcCompositeMixture(ta, tb, e0, e1, e2, d * (u1 - u0), color);
-    if (color.a >= in_groupEarlyTermination)
-    {
-      return;
-    }
-//TRC::EachMember next[@] = trcMemberPassNodes_v@(used[@], sf[@], sb[@], next[@], u1);
-    u0 = u1;
-  }
-  // Going up, the node before the next is at or below the piece's end; going down, the next.
-//TRC::EachMember trcVolume@.node = used[@] ? (sb[@] > sf[@] ? next[@] - 1 : next[@]) : trcVolume@.node;
-}
-
-// Volume k (inside, pending or done) in the search for the nearest event: its exit, or its
-// entry, in mu; the lowest index first on a tie (the others follow at the same place).
+// Volume k (inside, pending or done) in the search for the nearest event: the end of its span
+// (a node of its transfer function, or its tet's exit), or its entry, in mu; the lowest index first on a tie (the others follow at the same place).
 void trcGroupConsider(int k, bool inside, bool pending, float exitMu, float entryMu,
   inout int m, inout float event, inout int count, inout int alone)
 {
@@ -187,7 +152,8 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
 //TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
   bool goesOn = true;
   bool inside = true;
-//TRC::EachMember if (alone == @) { goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+  // It walks from where the ray is (its span may have begun before the last event).
+//TRC::EachMember if (alone == @) { trcMemberAdvance_v@(trcVolume@, mu + trcVolume@.lambdaNear); goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
   if (goesOn && !inside)
   {
     trcGroupNextEntry(head, alone);
@@ -230,11 +196,11 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
     }
     while (true)
     {
-      // The nearest event: volume m leaves its tet or enters. Only m moves on.
+      // The nearest event: volume m's span ends, or it enters. Only m moves on.
       int m = -1;
       float event = TRC_GROUP_FAR;
       count = 0;
-//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.exitAt - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
+//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.spanEnd - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
       if (m < 0)
       {
         finished = true;
@@ -245,28 +211,28 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
         break; // one volume inside: its own walk
       }
       handedBack = false;
-      // Integrate up to the event (or the end of the ray) with the volumes inside, each from
-      // where it is to there in its own lambda (its own exit exactly, when the event is that).
+      // Integrate up to the event (or the end of the ray) the mixture of the volumes inside:
+      // each one's attenuation and colour are linear until its span ends, which no event
+      // before this one did (docs/design.md, "Overlapping media").
       float end = min(event, muMax);
-      bool used[TRC_GROUP_MEMBERS];
-      float sf[TRC_GROUP_MEMBERS];
-      float sb[TRC_GROUP_MEMBERS];
 #ifdef TRC_PEEL_STAGE
-      if (count > 0 && mu < muFrom && end > mu)
-      {
-        // Before the range: the volumes inside only move on (to its start, or the event).
-        float to = min(end, muFrom);
-//TRC::EachMember trcMemberPiece_v@(trcVolume@, m == @ && to == event, to, sf[@], sb[@]);
-        mu = to;
-      }
+      // Before the range the volumes only move on.
+      float start = max(mu, muFrom);
+#else
+      float start = mu;
 #endif
-      if (count > 0 && end > mu)
+      if (count > 0 && end > start)
       {
+        float ta = 0.0;
+        float tb = 0.0;
+        vec3 e0 = vec3(0.0);
+        vec3 e1 = vec3(0.0);
+        vec3 e2 = vec3(0.0);
         float scale = 0.0;
-//TRC::EachMember used[@] = trcMemberPiece_v@(trcVolume@, m == @ && end == event, end, sf[@], sb[@]);
+//TRC::EachMember if (trcVolume@.inside) trcMemberPart_v@(trcVolume@, start + trcVolume@.lambdaNear, end + trcVolume@.lambdaNear, ta, tb, e0, e1, e2);
 //TRC::EachMember scale = alone == @ ? trcVolume@.ray.worldScale : scale;
         // One volume inside here only after a walk that stopped at the bound (a sliver).
-        trcGroupMixture(used, sf, sb, (end - mu) * scale, color);
+        trcCompositeMixture(ta, tb, e0, e1, e2, (end - start) * scale, color);
         mixed = mixed || count > 1;
       }
       if (color.a >= in_groupEarlyTermination)
@@ -281,8 +247,8 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
         break;
       }
       mu = max(mu, event);
-      // Volume m moves on: into the next tet, or the tet it enters; or it takes its next entry
-      // (the one-volume traversal's peeling rules).
+      // Volume m moves on: into its next span, the next tet, or the tet it enters; or it takes
+      // its next entry (the one-volume traversal's peeling rules).
       bool moved = true;
 //TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
       if (!moved)
