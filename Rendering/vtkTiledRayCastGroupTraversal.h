@@ -10,7 +10,7 @@
 =========================================================================*/
 /**
  * @class   vtkTiledRayCastGroupTraversal
- * @brief   the compute programs that traverse up to four overlapping volumes in one pass
+ * @brief   the compute programs that traverse several overlapping volumes in one pass
  *
  * Composes vtkTiledRayCastGroupTraversalCS.glsl from each volume's own GLSL (its common,
  * layout, integration and walk code, as vtkTiledRayCastShaderComposition composes them for

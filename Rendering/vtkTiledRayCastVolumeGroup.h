@@ -134,8 +134,8 @@ public:
    * The group of `self` among the visible volumes of our mappers in a renderer (`candidates`,
    * in the renderer's order, `self` among them): the volumes that can be traversed together
    * and overlap `self` directly or through others, `self` first. A single volume (itself) where
-   * it overlaps none, cannot be grouped, or the group would have more than four (warned once
-   * per mapper).
+   * it overlaps none, cannot be grouped, or the group would have more than MaximumVolumes
+   * (warned once per mapper). Render() then takes what the texture units hold.
    */
   static std::vector<Candidate> Select(const std::vector<Candidate>& candidates, vtkVolume* self);
 

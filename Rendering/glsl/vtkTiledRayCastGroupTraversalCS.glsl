@@ -1,6 +1,6 @@
 //TRC::Version
 //============================================================================
-// TiledRayCast, compute pipeline: one traversal of up to four overlapping
+// TiledRayCast, compute pipeline: one traversal of several overlapping
 // volumes (vtkTiledRayCastGroupTraversal composes it). Each volume has its own
 // mesh, transfer function, matrix and rays: its code is the one-volume code
 // with a suffix per volume (vtkTiledRayCastGroupMember.glsl), called here by
