@@ -368,6 +368,20 @@ bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volu
 }
 
 //------------------------------------------------------------------------------
+bool vtkTiledRayCastVolumeGroup::MaySplit(
+  const std::vector<Candidate>& set, const Candidate& drawer)
+{
+  // The textures the volumes' last frames asked for (Render() counts again once they are
+  // prepared), against what the drawing volume's window has free.
+  int units = 0;
+  for (const Candidate& c : set)
+  {
+    units += vtkTiledRayCastGroupTraversal::GetTextureUnits(c.Member->GetGroupInputs());
+  }
+  return set.size() > 1 && units > drawer.Member->GetGroupTextureUnits();
+}
+
+//------------------------------------------------------------------------------
 bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
   vtkRenderer* renderer, const std::vector<Candidate>& candidates, vtkVolume* self)
 {
@@ -417,13 +431,19 @@ bool vtkTiledRayCastVolumeGroup::RenderInDepthOrder(
     }
   }
   // A volume VTK draws though its bounds are out of view draws only itself.
-  if (sets.size() < 2 || !drawer || !drawerInView)
+  if (!drawer || !drawerInView)
   {
     return false;
   }
   // Inside VTK's depth peeling, a stage of it: the sets go over one another in the stage's
-  // accumulation, which the calling volume's mapper then composites once.
+  // accumulation, which the calling volume's mapper then composites once; also one set whose
+  // volumes would not all fit one traversal (Render() splits it), whose parts the pass would
+  // otherwise blend with MAX.
   const bool stage = vtkTiledRayCastVolumetricPeel::FindPass(self) != nullptr;
+  if (sets.size() < 2 && !(stage && sets.size() == 1 && MaySplit(sets.front(), *drawer)))
+  {
+    return false;
+  }
   if (!drawer->Member->BeginDepthOrder(renderer, self, stage))
   {
     return false;

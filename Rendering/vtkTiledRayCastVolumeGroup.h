@@ -27,7 +27,8 @@
  * with one warning per mapper. One traversal takes as many volumes as the GPU's compute shader
  * has texture units for (vtkTiledRayCastGroupTraversal::GetTextureUnits: 7 volumes of one
  * texture buffer per array in the 32 units of an H100 or of llvmpipe), up to eight; the
- * volumes past that are drawn on their own, each with a warning.
+ * volumes past that are drawn apart (together, where they overlap one another), each with a
+ * warning.
  *
  * Inside VTK's dual depth peeling, which draws every volume in each of its stages, the group is
  * drawn in each stage between the stage's depths, and its other volumes are marked drawn for
@@ -187,6 +188,9 @@ private:
   static void MarkDrawn(vtkRenderer* renderer, vtkVolume* volume, bool stage = false);
   // Whether it is marked so (the mark is not taken).
   static bool Marked(vtkRenderer* renderer, vtkVolume* volume);
+  // Whether `set` (a group Select() found) may be more than one traversal takes (Render()
+  // then draws the volumes left out apart).
+  static bool MaySplit(const std::vector<Candidate>& set, const Candidate& drawer);
 };
 
 #endif

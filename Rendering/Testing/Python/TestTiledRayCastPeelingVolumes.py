@@ -276,6 +276,29 @@ class TestTiledRayCastPeelingVolumes(unittest.TestCase):
         self.assertEqual(grouped, [2, 2, 1])
         self.assertEqual(sorted(sets), [0, 0, 2])
 
+    def test_more_than_one_traversal_takes(self):
+        """Eight overlapping copies: the peeling's stages take fewer in one traversal than
+        outside it (VTK's depth textures take units too); the volumes left out are drawn apart,
+        over the traversal's colours in each stage's accumulation (not blended with MAX), each
+        warned once, and no OpenGL error."""
+        scene = Scene(self.grid, [(0.03 * i, 0.02 * i, 0.01 * i) for i in range(8)], range(8))
+        scene.look((-1.5, -1.0, 0.5), (0.4, 0, 0))
+        messages = []
+        for volume in scene.volumes:
+            mapper = volume.GetMapper()
+            mapper.AddObserver("WarningEvent", lambda caller, event: messages.append("warning"))
+            mapper.AddObserver("ErrorEvent", lambda caller, event: messages.append("error"))
+        scene.window.Render()
+        scene.window.Render()
+        stats = [v.GetMapper().GetStatistics() for v in scene.volumes]
+        taken = stats[0].GetNumberOfGroupedVolumes()
+        print("eight overlapping in the peeling: %d in one traversal, grouped %s" % (
+            taken, [s.GetNumberOfGroupedVolumes() for s in stats]))
+        self.assertTrue(4 <= taken < 8)
+        self.assertTrue(all(s.GetRendered() for s in stats))
+        self.assertEqual(stats[0].GetNumberOfVolumeSetsInDepthOrder(), 1)
+        self.assertEqual(messages, ["warning"] * (8 - taken))
+
     def test_remainder(self):
         """One peel where more are needed: the sets are put in order in the remainder too
         (alpha blended there, VTK's approximation: not compared)."""
