@@ -57,6 +57,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfSteps = 0;
   this->MaximumStepsPerRay = 0;
   this->MeshBuildTime = 0;
+  this->MeshRebuild = 0;
   this->TransferFunctionBuildTime = 0;
   this->RenderTime = 0;
   this->UploadedBytes = 0;
@@ -192,6 +193,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CompositingTime: " << this->CompositingTime << "\n";
   os << indent << "TotalGPUTime: " << this->TotalGPUTime << "\n";
   os << indent << "MeshBuildTime: " << this->MeshBuildTime << "\n";
+  os << indent << "MeshRebuild: " << this->MeshRebuild << "\n";
   os << indent << "TransferFunctionBuildTime: " << this->TransferFunctionBuildTime << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";

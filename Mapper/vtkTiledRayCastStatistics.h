@@ -254,6 +254,21 @@ public:
   vtkGetMacro(TotalGPUTime, double);
   ///@}
 
+  /**
+   * What the last render rebuilt of the mesh on the CPU (MeshBuildTime timed it): a combination
+   * of MeshRebuildScalars, MeshRebuildPoints (the points moved: positions, bounds, orientation
+   * and degeneracy, a deforming mesh's frame; tetrahedra that turned inside out are reoriented
+   * in place) and MeshRebuildTopology (the cells changed: everything), 0 when nothing changed.
+   */
+  enum MeshRebuildFlags
+  {
+    MeshRebuildScalars = 1,
+    MeshRebuildPoints = 2,
+    MeshRebuildTopology = 4
+  };
+  vtkSetMacro(MeshRebuild, int);
+  vtkGetMacro(MeshRebuild, int);
+
   ///@{
   /**
    * CPU work of the last render, in seconds: rebuilding the mesh layout (0 when nothing
@@ -388,6 +403,7 @@ protected:
   int NumberOfShaderCompositions = 0;
   vtkIdType NumberOfSteps = 0;
   vtkIdType MaximumStepsPerRay = 0;
+  int MeshRebuild = 0;
   double FirstHitTime = -1;
   double PeelingTime = -1;
   double RayCastingTime = -1;

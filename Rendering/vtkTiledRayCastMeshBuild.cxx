@@ -191,6 +191,8 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
   this->BudgetUserLimit = budget.GetUserLimit();
   timer->StopTimer();
   self->GetStatistics()->SetMeshBuildTime(timer->GetElapsedTime());
+  // The builder's flags are the statistics' (scalars 1, points 2, topology 4).
+  self->GetStatistics()->SetMeshRebuild(builder->GetLastRebuild());
   if (builder->GetLastRebuild() != vtkTetMeshBuilder::RebuildNothing)
   {
     self->UpdateProgress(1.0);

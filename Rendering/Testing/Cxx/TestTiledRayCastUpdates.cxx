@@ -185,6 +185,10 @@ bool TransferFunctionAndPoints(Scene& s)
          "moving points uploads the points only (" + std::to_string(Uploaded(s.Mapper)) + " B, " +
            std::to_string(pointBytes) + " expected)") &&
     ok;
+  ok = Expect(s.Mapper->GetStatistics()->GetMeshRebuild() ==
+           vtkTiledRayCastStatistics::MeshRebuildPoints,
+         "moving points rebuilds the points only (MeshRebuild)") &&
+    ok;
   ok = s.Matches("moved points") && ok;
   return ok;
 }
@@ -218,6 +222,18 @@ bool DeformingFrames(Scene& s)
     s.Window->Render();
     const std::string label =
       std::string(wave ? "wave" : "inside out") + ", deforming frame " + std::to_string(frame + 1);
+    // The statistics say what was rebuilt: the points, or everything in the two frames where
+    // the mesh turns inside out or back (the tetrahedra are reoriented by a full build).
+    vtkTiledRayCastStatistics* stats = s.Mapper->GetStatistics();
+    std::cout << label << ": mesh rebuild " << stats->GetMeshRebuild() << " in "
+              << 1000 * stats->GetMeshBuildTime() << " ms\n";
+    const int all = vtkTiledRayCastStatistics::MeshRebuildScalars |
+      vtkTiledRayCastStatistics::MeshRebuildPoints | vtkTiledRayCastStatistics::MeshRebuildTopology;
+    const bool flips = frame == 6 || frame == 9;
+    ok = Expect(stats->GetMeshRebuild() ==
+             (flips ? all : static_cast<int>(vtkTiledRayCastStatistics::MeshRebuildPoints)),
+           label + (flips ? ": turned over, a full rebuild" : ": the points rebuilt only")) &&
+      ok;
     ok = s.Matches(label.c_str()) && ok;
   }
   points->DeepCopy(rest);
