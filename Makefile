@@ -5,8 +5,10 @@
 # Developer targets:
 #   make build      configure and build ./build only
 #   make sanitize   build ./build-asan with ASan and UBSan and run the tests under them
+#   make test-debian13  build and test the same sources against Debian 13's VTK 9.3, in a
+#                   Debian 13 root made and cached under build/debian13 (root, network)
 #   make install PREFIX=...
-.PHONY: demo test build sanitize install clean paraview
+.PHONY: demo test build sanitize install clean paraview test-debian13
 
 build:
 	Module/build.sh
@@ -25,6 +27,10 @@ paraview:
 # pattern with | in it, ARGS="-R 'BadInput|Scenes'").
 sanitize:
 	Module/sanitize.sh $(ARGS)
+
+# make test-debian13 ARGS="-R Scenes" runs only some tests (ARGS go to ctest).
+test-debian13:
+	Module/test-debian13.sh $(ARGS)
 
 # make install PREFIX=/some/where
 PREFIX ?= /usr/local

@@ -40,6 +40,7 @@
 #include "vtkTimerLog.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVersionMacros.h"
 #include "vtkXMLUnstructuredGridReader.h"
 #include "vtkXMLUnstructuredGridWriter.h"
 
@@ -111,6 +112,47 @@ const Rung Ladder[] = {
   { "lattice_10m",  "lattice", 0.00016, 1967640, 9959796 },
   // clang-format on
 };
+
+// The lattice's boundary comes from vtkThreshold and vtkDataSetSurfaceFilter, whose output is
+// ordered otherwise from VTK 9.3 on: TetGen meshes the same solid into other counts. Measured with
+// Debian 13's VTK 9.3.0 and TetGen 1.5.0 (make test-debian13); 0 where not measured.
+struct Counts
+{
+  const char* Name;
+  vtkIdType Points;
+  vtkIdType Tetrahedra;
+};
+const Counts LatticeFromVTK93[] = {
+  { "lattice_100k", 36327, 117455 },
+  { "lattice_300k", 90549, 333947 },
+  { "lattice_1m", 190416, 795189 },
+  { "lattice_3m", 639935, 3012908 },
+  { "lattice_10m", 1967954, 9961671 },
+};
+
+// The rung as the VTK it is built against makes it (its expected counts; 0 where unknown).
+Rung Expected(const Rung& rung)
+{
+  Rung expected = rung;
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+  for (const Counts& counts : LatticeFromVTK93)
+  {
+    if (std::string(counts.Name) == rung.Name)
+    {
+      expected.Points = counts.Points;
+      expected.Tetrahedra = counts.Tetrahedra;
+    }
+  }
+#endif
+  return expected;
+}
+
+// Whether `points` and `tets` are what `rung` expects with this VTK (any, where it knows none).
+bool AsExpected(const Rung& rung, vtkIdType points, vtkIdType tets)
+{
+  const Rung expected = Expected(rung);
+  return expected.Points == 0 || (points == expected.Points && tets == expected.Tetrahedra);
+}
 
 bool IsTetGenFamily(const std::string& family)
 {
@@ -337,12 +379,12 @@ bool Verify(const std::string& fileName, const Rung& rung)
     std::cerr << "verify " << rung.Name << ": " << what << "\n";
     ok = false;
   };
-  if (mesh->GetNumberOfPoints() != rung.Points || mesh->GetNumberOfCells() != rung.Tetrahedra)
+  if (!AsExpected(rung, mesh->GetNumberOfPoints(), mesh->GetNumberOfCells()))
   {
     std::ostringstream text;
     text << mesh->GetNumberOfPoints() << " points and " << mesh->GetNumberOfCells()
-         << " tetrahedra, expected " << rung.Points << " and " << rung.Tetrahedra
-         << " (another VTK or TetGen version?)";
+         << " tetrahedra, expected " << Expected(rung).Points << " and "
+         << Expected(rung).Tetrahedra << " (another VTK or TetGen version?)";
     fail(text.str());
     return false;
   }
@@ -490,8 +532,9 @@ void ListRungs(const Options& options)
     {
       continue;
     }
+    const Rung expected = Expected(rung);
     std::cout << "| " << rung.Name << " | " << rung.Family << " | " << rung.Parameter << " | "
-              << Thousands(rung.Points) << " | " << Thousands(rung.Tetrahedra) << " |\n";
+              << Thousands(expected.Points) << " | " << Thousands(expected.Tetrahedra) << " |\n";
   }
 }
 
@@ -642,10 +685,10 @@ int MakeRung(const Options& options, const Rung& rung)
     std::cout << "  (" << swapped << " tetrahedra reoriented, " << degenerate << " flat)"
               << std::endl;
   }
-  if (points != rung.Points || tets != rung.Tetrahedra)
+  if (!AsExpected(rung, points, tets))
   {
-    std::cerr << rung.Name << ": expected " << rung.Points << " points and " << rung.Tetrahedra
-              << " tetrahedra\n";
+    std::cerr << rung.Name << ": expected " << Expected(rung).Points << " points and "
+              << Expected(rung).Tetrahedra << " tetrahedra\n";
     ++failures;
   }
   if (options.Verify && !Verify(fileName, rung))

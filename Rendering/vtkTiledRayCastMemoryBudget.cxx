@@ -79,7 +79,10 @@ vtkIdType vtkTiledRayCastMemoryBudget::GetBytes()
     this->Bytes = this->UserLimit;
     this->Source = "the mapper's MaximumGPUMemory";
   }
-  if (this->Window && GLEW_NVX_gpu_memory_info)
+  // NVIDIA's own driver's report only: Mesa 25's llvmpipe (Debian 13) exposes the extension and
+  // answers with whatever its stack held (from 1 KiB to 2 TB free, changing from call to call).
+  if (this->Window && GLEW_NVX_gpu_memory_info &&
+    this->Window->GetState()->GetVendor().compare(0, 6, "NVIDIA") == 0)
   {
     // In KiB. What the mesh holds now is replaced, so it counts as free.
     int freeKiB = 0;

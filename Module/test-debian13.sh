@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# make test-debian13: the same sources built and tested against Debian 13's VTK 9.3 (issue 27),
+# on this Debian 12 machine. A Debian 13 root made from Debian's packages with mmdebstrap (a
+# Debian package, installed here if missing) is cached in build/debian13/root and reused; it is
+# made again when its package list changes, or when an earlier run was interrupted before it was
+# complete (the stamp is written last). Inside it the module is configured and built in
+# /build (build/debian13/root/build here) from the source tree, bind-mounted read-only at /src,
+# and the suite runs without the ParaView tests (ParaView 5.13's plugin is not built yet).
+# Extra arguments go to ctest. Needs root (chroot, mounts). Exit status: ctest's; 125 (skip)
+# when Debian's archive cannot be reached to make the root.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cache="${TRC_DEBIAN13_DIR:-$here/build/debian13}"
+root="$cache/root"
+mirror="${TRC_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
+
+say() { echo "test-debian13: $*"; }
+
+packages=(
+  cmake ninja-build g++ make                   # build tools
+  libvtk9-dev vtk9 python3-vtk9                # VTK 9.3
+  libglew-dev libegl-dev libgl-dev             # the GL libraries' headers VTK links
+  libegl-mesa0 libgl1-mesa-dri                 # Mesa's llvmpipe
+  xvfb xauth                                   # the tests that use VTK's X window
+  tetgen libtet1.5-dev                         # the optional meshing module and the ladder
+  openmpi-bin                                  # mpirun (the ParaView tests, once they run here)
+)
+stamp="trixie ${packages[*]}"
+
+if [ "$(id -u)" -ne 0 ]; then
+  say "needs root (chroot and mounts); skipped"
+  exit 125
+fi
+
+# --- The root ----------------------------------------------------------------------------------
+if [ ! -f "$root/.trc-complete" ] || [ "$(cat "$root/.trc-complete")" != "$stamp" ]; then
+  if [ -d "$root" ]; then
+    say "the cached root is incomplete or for other packages: made again"
+    rm -rf "$root"
+  fi
+  if ! command -v mmdebstrap > /dev/null; then
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -q > /dev/null && apt-get install -y -q mmdebstrap > /dev/null ||
+      { say "cannot install mmdebstrap (no network?); skipped"; exit 125; }
+  fi
+  mkdir -p "$cache"
+  include="$(IFS=,; echo "${packages[*]}")"
+  say "making a Debian 13 root in $root"
+  if ! mmdebstrap --quiet --variant=apt --include="$include" trixie "$root" "$mirror"; then
+    rm -rf "$root"
+    say "cannot make the Debian 13 root from $mirror (no network?); skipped"
+    exit 125
+  fi
+  echo "$stamp" > "$root/.trc-complete"
+fi
+
+# --- Build and test inside it ------------------------------------------------------------------
+mkdir -p "$root/src" "$root/build"
+mounted=()
+cleanup() {
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do
+    umount "${mounted[$i]}" 2> /dev/null || umount -l "${mounted[$i]}" || true
+  done
+}
+trap cleanup EXIT
+mount --bind "$here" "$root/src" && mounted+=("$root/src")
+mount -o remount,bind,ro "$root/src" || true
+mount --bind /dev "$root/dev" && mounted+=("$root/dev")
+mount -t proc proc "$root/proc" && mounted+=("$root/proc")
+
+ctest_args=""
+for a in "$@"; do
+  ctest_args+=" $(printf '%q' "$a")"
+done
+chroot "$root" /usr/bin/env -u DISPLAY bash -c "
+  set -euo pipefail
+  vtk=\$(dpkg-query -W -f='\${Version}' libvtk9-dev)
+  echo \"test-debian13: Debian \$(cat /etc/debian_version), VTK \$vtk\"
+  if [ ! -f /build/build.ninja ]; then
+    cmake -S /src -B /build -G Ninja -Wno-dev -DCMAKE_BUILD_TYPE=Release \
+      -DPython3_EXECUTABLE=/usr/bin/python3 -DTILEDRAYCAST_ENABLE_TETGEN=ON \
+      -DTILEDRAYCAST_REPORT_OPENGL_ERRORS=ON > /build/configure.log
+  fi
+  cmake --build /build -j \$(nproc)
+  cd /build
+  ctest --output-on-failure -LE ParaView $ctest_args
+"
