@@ -109,11 +109,13 @@ bool OutsideFrustum(const double bounds[6], vtkMatrix4x4* matrix)
   return std::find(outside, outside + 6, 8) != outside + 6;
 }
 
-std::string Warning(const std::string& reason)
+// `alone`: how the volume is drawn instead ("on its own", or with the others left out).
+std::string Warning(const std::string& reason, const std::string& alone = "on its own")
 {
   return "This volume overlaps another volume of a tiled ray-cast mapper, but " + reason +
-    ": it is drawn on its own, before or after the others by the depth of its bounds, not mixed "
-    "with them where they overlap (docs/mapper.md, \"Overlapping volumes\").";
+    ": it is drawn " + alone +
+    ", before or after the others by the depth of its bounds, not mixed with them where they "
+    "overlap (docs/mapper.md, \"Overlapping volumes\").";
 }
 } // anonymous namespace
 
@@ -309,10 +311,11 @@ int vtkTiledRayCastVolumeGroup::Render(
         return 0;
       }
       c.Member->WarnGroupOnce(Warning("the " + std::to_string(members.size()) +
-        " volumes before it fill one traversal: its compute shader has " + std::to_string(limit) +
-        " texture units for the volumes' own textures here, and this volume takes " +
-        std::to_string(needs) + " (its mesh's texture buffers, transfer function and visible " +
-        "tets)"));
+          " volumes before it fill one traversal: its compute shader has " + std::to_string(limit) +
+          " texture units for the volumes' own textures here, and this volume takes " +
+          std::to_string(needs) + " (its mesh's texture buffers, transfer function and visible " +
+          "tets)",
+        "on its own (or mixed with the other volumes left out, where they overlap)"));
       continue;
     }
     units += needs;
