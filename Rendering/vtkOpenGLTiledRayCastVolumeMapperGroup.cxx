@@ -223,11 +223,11 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::WarnGroupOnce(const std::s
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::BeginDepthOrder(
   vtkRenderer* ren, vtkVolume* vol, bool stage)
 {
-  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!stage)
   {
     return true; // drawn one over another into the renderer's framebuffer
   }
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   if (!window)
   {
     return false;

@@ -52,6 +52,14 @@ std::map<vtkRenderer*, RendererFrame>& Frames()
 
 void RendererEvent(vtkObject* caller, unsigned long event, void*, void*);
 
+// The marks of `renderer`'s current frame, or null where it has none.
+RendererFrame* MarksOf(vtkRenderer* renderer)
+{
+  auto& frames = Frames();
+  auto it = frames.find(renderer);
+  return it != frames.end() && it->second.Renderer == renderer ? &it->second : nullptr;
+}
+
 // The marks of `renderer`'s current frame, cleared at its next StartEvent.
 RendererFrame& FrameOf(vtkRenderer* renderer)
 {
@@ -347,27 +355,25 @@ void vtkTiledRayCastVolumeGroup::MarkDrawn(vtkRenderer* renderer, vtkVolume* vol
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastVolumeGroup::Marked(vtkRenderer* renderer, vtkVolume* volume)
 {
-  auto& frames = Frames();
-  auto it = frames.find(renderer);
-  return it != frames.end() && it->second.Renderer == renderer &&
-    (it->second.Drawn.count(volume) > 0 || it->second.DrawnInStage.count(volume) > 0 ||
-      it->second.Leaders.count(volume) > 0);
+  const RendererFrame* frame = MarksOf(renderer);
+  return frame &&
+    (frame->Drawn.count(volume) > 0 || frame->DrawnInStage.count(volume) > 0 ||
+      frame->Leaders.count(volume) > 0);
 }
 
 //------------------------------------------------------------------------------
 bool vtkTiledRayCastVolumeGroup::WasDrawn(vtkRenderer* renderer, vtkVolume* volume)
 {
-  auto& frames = Frames();
-  auto it = frames.find(renderer);
-  if (it == frames.end() || it->second.Renderer != renderer)
+  RendererFrame* frame = MarksOf(renderer);
+  if (!frame)
   {
     return false;
   }
   // A group's first volume is drawn again (its next stage of VTK's depth peeling): another
   // group may take it from then on.
-  it->second.Leaders.erase(volume);
+  frame->Leaders.erase(volume);
   // A mark of the current stage of VTK's depth peeling serves the volume's draw in that stage.
-  return it->second.Drawn.count(volume) > 0 || it->second.DrawnInStage.erase(volume) > 0;
+  return frame->Drawn.count(volume) > 0 || frame->DrawnInStage.erase(volume) > 0;
 }
 
 //------------------------------------------------------------------------------
