@@ -17,9 +17,14 @@
 //   invert: z scaled by cos(w t) about the mesh's centre: the mesh flattens, turns inside out
 //           (every tet inverted, which the builder reorients) and recovers, once a period.
 //
-// Usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] mesh.vtu...
-// Statistics are synchronous (each frame's GPU times are read before the next frame), so the
-// wall clock includes that wait.
+// Usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] [--point-update cpu|gpu|both]
+//        mesh.vtu...
+// Each motion is played with the mapper's PointUpdate on the CPU (the CPU rebuilds the points)
+// and on the GPU (the input's coordinates go straight to the GPU), interleaved in one run
+// (--point-update picks one). Statistics are synchronous in the timed frames (each frame's GPU
+// times are read before the next frame), so their wall clock includes that wait; the same frames
+// are then played again without them, back to back, and timed as a whole (frame_ms_free: what an
+// application that renders frames one after the other gets).
 #include "BenchmarkFrames.h"
 #include "TiledRayCastSharedScenes.h"
 
@@ -76,32 +81,144 @@ void Deform(const std::vector<double>& rest, const double centre[3], double size
     });
   points->Modified();
 }
+
+// One motion of `grid`, `frames` frames timed with synchronous statistics, then the same frames
+// again without them, timed as a whole; a line on stdout and in the CSV.
+void Play(vtkUnstructuredGrid* grid, const std::string& mesh, const std::string& mode, bool onGPU,
+  int size, int frames, std::ofstream& out)
+{
+  // Points of our own, in double, so that moving them is the application's usual work.
+  vtkNew<vtkUnstructuredGrid> moving;
+  moving->ShallowCopy(grid);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(grid->GetNumberOfPoints());
+  std::vector<double> rest(3 * static_cast<size_t>(grid->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+  {
+    grid->GetPoint(i, &rest[3 * i]);
+    points->SetPoint(i, &rest[3 * i]);
+  }
+  moving->SetPoints(points);
+  double bounds[6], centre[3];
+  grid->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
+  }
+  const double extent = trcscene::Diagonal(bounds);
+
+  vtkNew<vtkTiledRayCastVolumeMapper> mapper;
+  mapper->SetInputData(moving);
+  mapper->SetPointUpdate(onGPU ? vtkTiledRayCastVolumeMapper::GPU_POINT_UPDATE
+                               : vtkTiledRayCastVolumeMapper::CPU_POINT_UPDATE);
+  mapper->SynchronousStatisticsOn();
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->SetProperty(trcscene::MakePropertyFor(moving));
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0, 0, 0);
+  renderer->AddVolume(volume);
+  vtkNew<vtkRenderWindow> window;
+  trcbench::SetUpWindow(window, renderer, size);
+
+  vtkNew<vtkTimerLog> timer;
+  const double first = trcbench::TimeFrame(window, timer);
+  vtkTiledRayCastStatistics* stats = mapper->GetStatistics();
+  std::vector<double> move, build, cpu, gpu, wall, uploaded;
+  int alone = 0, rebuilt = 0;
+  for (int f = 1; f <= frames; ++f)
+  {
+    vtkNew<vtkTimerLog> frameTimer;
+    frameTimer->StartTimer();
+    vtkNew<vtkTimerLog> moveTimer;
+    moveTimer->StartTimer();
+    Deform(rest, centre, extent, mode, f, frames, points);
+    moving->Modified();
+    moveTimer->StopTimer();
+    window->Render();
+    window->WaitForCompletion();
+    frameTimer->StopTimer();
+    move.push_back(1000.0 * moveTimer->GetElapsedTime());
+    build.push_back(1000.0 * stats->GetMeshBuildTime());
+    cpu.push_back(1000.0 * stats->GetRenderTime() - 1000.0 * stats->GetMeshBuildTime());
+    gpu.push_back(stats->GetTotalGPUTime()); // already in ms
+    wall.push_back(1000.0 * frameTimer->GetElapsedTime());
+    uploaded.push_back(stats->GetUploadedBytes() / (1024.0 * 1024.0)); // this frame's
+    const int rebuild = stats->GetMeshRebuild();
+    alone += rebuild == vtkTiledRayCastStatistics::MeshRebuildPointsOnGPU ? 1 : 0;
+    rebuilt += (rebuild & vtkTiledRayCastStatistics::MeshRebuildPoints) ? 1 : 0;
+  }
+  // The same frames without waiting for each one's GPU times.
+  mapper->SynchronousStatisticsOff();
+  window->WaitForCompletion();
+  vtkNew<vtkTimerLog> freeTimer;
+  freeTimer->StartTimer();
+  for (int f = 1; f <= frames; ++f)
+  {
+    Deform(rest, centre, extent, mode, f, frames, points);
+    moving->Modified();
+    window->Render();
+  }
+  window->WaitForCompletion();
+  freeTimer->StopTimer();
+  const double free = 1000.0 * freeTimer->GetElapsedTime() / frames;
+  std::cout << mesh << " " << mode << (onGPU ? ", points on the GPU" : ", points on the CPU") << " "
+            << size << "^2: move " << trcbench::Median(move) << " ms, mesh build "
+            << trcbench::Median(build) << " ms, mapper CPU " << trcbench::Median(cpu) << " ms, GPU "
+            << trcbench::Median(gpu) << " ms, wall " << trcbench::Median(wall) << " ms, upload "
+            << trcbench::Median(uploaded) << " MB a frame (first frame " << first << " ms); "
+            << alone << " frames moved on the GPU alone, " << rebuilt
+            << " rebuilt on the CPU; frames back to back " << free << " ms each\n";
+  if (out)
+  {
+    out << mesh << "," << grid->GetNumberOfCells() << "," << grid->GetNumberOfPoints() << ","
+        << mode << "," << (onGPU ? "gpu" : "cpu") << "," << size << "," << frames << ","
+        << trcbench::Median(move) << "," << trcbench::Median(build) << "," << trcbench::Median(cpu)
+        << "," << trcbench::Median(gpu) << "," << trcbench::Median(wall) << ","
+        << trcbench::Median(uploaded) << "," << first << "," << alone << "," << rebuilt << ","
+        << free << "\n";
+  }
+}
 }
 
 int main(int argc, char* argv[])
 {
-  trcbench::Options options;
+  struct : trcbench::Options
+  {
+    std::vector<bool> PointsOnGPU{ false, true };
+  } options;
   options.MinimumFrames = 2;
   for (int i = 1; i < argc; ++i)
   {
-    if (!trcbench::ReadOption(argc, argv, i, options))
+    if (!std::strcmp(argv[i], "--point-update") && i + 1 < argc)
+    {
+      const std::string which = argv[++i];
+      options.PointsOnGPU = which == "gpu" ? std::vector<bool>{ true }
+        : which == "cpu"                   ? std::vector<bool>{ false }
+        : which == "both"                  ? std::vector<bool>{ false, true }
+                                           : std::vector<bool>{};
+    }
+    else if (!trcbench::ReadOption(argc, argv, i, options))
     {
       options.Meshes.emplace_back(argv[i]);
     }
   }
   const int size = options.Size;
   const int frames = options.Frames;
-  if (options.Meshes.empty())
+  if (options.Meshes.empty() || options.PointsOnGPU.empty())
   {
-    std::cerr << "usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] mesh.vtu...\n";
+    std::cerr << "usage: BenchmarkDeformingMesh [--size N] [--frames N] [--csv file] "
+                 "[--point-update cpu|gpu|both] mesh.vtu...\n";
     return EXIT_FAILURE;
   }
   std::ofstream out;
   if (!options.Csv.empty())
   {
     out.open(options.Csv);
-    out << "mesh,tets,points,mode,image_size,frames,move_points_ms,mesh_build_ms,mapper_cpu_ms,"
-           "gpu_ms,wall_ms,uploaded_mb_per_frame,first_frame_ms\n";
+    out << "mesh,tets,points,mode,point_update,image_size,frames,move_points_ms,mesh_build_ms,"
+           "mapper_cpu_ms,gpu_ms,wall_ms,uploaded_mb_per_frame,first_frame_ms,frames_on_gpu_alone,"
+           "frames_rebuilt_on_cpu,frame_ms_free\n";
   }
   for (const std::string& path : options.Meshes)
   {
@@ -113,74 +230,9 @@ int main(int argc, char* argv[])
     const std::string mesh = trcbench::MeshName(path);
     for (const std::string mode : { "wave", "invert" })
     {
-      // Points of our own, in double, so that moving them is the application's usual work.
-      vtkNew<vtkUnstructuredGrid> moving;
-      moving->ShallowCopy(grid);
-      vtkNew<vtkPoints> points;
-      points->SetDataTypeToDouble();
-      points->SetNumberOfPoints(grid->GetNumberOfPoints());
-      std::vector<double> rest(3 * static_cast<size_t>(grid->GetNumberOfPoints()));
-      for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i)
+      for (const bool onGPU : options.PointsOnGPU)
       {
-        grid->GetPoint(i, &rest[3 * i]);
-        points->SetPoint(i, &rest[3 * i]);
-      }
-      moving->SetPoints(points);
-      double bounds[6], centre[3];
-      grid->GetBounds(bounds);
-      for (int k = 0; k < 3; ++k)
-      {
-        centre[k] = 0.5 * (bounds[2 * k] + bounds[2 * k + 1]);
-      }
-      const double extent = trcscene::Diagonal(bounds);
-
-      vtkNew<vtkTiledRayCastVolumeMapper> mapper;
-      mapper->SetInputData(moving);
-      mapper->SynchronousStatisticsOn();
-      vtkNew<vtkVolume> volume;
-      volume->SetMapper(mapper);
-      volume->SetProperty(trcscene::MakePropertyFor(moving));
-      vtkNew<vtkRenderer> renderer;
-      renderer->SetBackground(0, 0, 0);
-      renderer->AddVolume(volume);
-      vtkNew<vtkRenderWindow> window;
-      trcbench::SetUpWindow(window, renderer, size);
-
-      vtkNew<vtkTimerLog> timer;
-      const double first = trcbench::TimeFrame(window, timer);
-      vtkTiledRayCastStatistics* stats = mapper->GetStatistics();
-      std::vector<double> move, build, cpu, gpu, wall, uploaded;
-      for (int f = 1; f <= frames; ++f)
-      {
-        vtkNew<vtkTimerLog> frameTimer;
-        frameTimer->StartTimer();
-        vtkNew<vtkTimerLog> moveTimer;
-        moveTimer->StartTimer();
-        Deform(rest, centre, extent, mode, f, frames, points);
-        moving->Modified();
-        moveTimer->StopTimer();
-        window->Render();
-        window->WaitForCompletion();
-        frameTimer->StopTimer();
-        move.push_back(1000.0 * moveTimer->GetElapsedTime());
-        build.push_back(1000.0 * stats->GetMeshBuildTime());
-        cpu.push_back(1000.0 * stats->GetRenderTime() - 1000.0 * stats->GetMeshBuildTime());
-        gpu.push_back(stats->GetTotalGPUTime()); // already in ms
-        wall.push_back(1000.0 * frameTimer->GetElapsedTime());
-        uploaded.push_back(stats->GetUploadedBytes() / (1024.0 * 1024.0)); // this frame's
-      }
-      std::cout << mesh << " " << mode << " " << size << "^2: move " << trcbench::Median(move)
-                << " ms, mesh build " << trcbench::Median(build) << " ms, mapper CPU "
-                << trcbench::Median(cpu) << " ms, GPU " << trcbench::Median(gpu) << " ms, wall "
-                << trcbench::Median(wall) << " ms, upload " << trcbench::Median(uploaded)
-                << " MB a frame (first frame " << first << " ms)\n";
-      if (out)
-      {
-        out << mesh << "," << grid->GetNumberOfCells() << "," << grid->GetNumberOfPoints() << ","
-            << mode << "," << size << "," << frames << "," << trcbench::Median(move) << ","
-            << trcbench::Median(build) << "," << trcbench::Median(cpu) << ","
-            << trcbench::Median(gpu) << "," << trcbench::Median(wall) << ","
-            << trcbench::Median(uploaded) << "," << first << "\n";
+        Play(grid, mesh, mode, onGPU, size, frames, out);
       }
     }
   }

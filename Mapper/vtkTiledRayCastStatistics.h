@@ -255,16 +255,19 @@ public:
   ///@}
 
   /**
-   * What the last render rebuilt of the mesh on the CPU (MeshBuildTime timed it): a combination
-   * of MeshRebuildScalars, MeshRebuildPoints (the points moved: positions, bounds, orientation
-   * and degeneracy, a deforming mesh's frame; tetrahedra that turned inside out are reoriented
-   * in place) and MeshRebuildTopology (the cells changed: everything), 0 when nothing changed.
+   * What the last render rebuilt of the mesh (MeshBuildTime timed it): a combination of
+   * MeshRebuildScalars, MeshRebuildPoints (the points moved and the CPU rebuilt them:
+   * positions, bounds, orientation and degeneracy), MeshRebuildTopology (the cells changed, or
+   * a tetrahedron of a moving mesh turned inside out: everything) and MeshRebuildPointsOnGPU
+   * (only the points moved and went straight to the GPU, checked and written there: see
+   * vtkTiledRayCastVolumeMapper::PointUpdates), 0 when nothing changed.
    */
   enum MeshRebuildFlags
   {
     MeshRebuildScalars = 1,
     MeshRebuildPoints = 2,
-    MeshRebuildTopology = 4
+    MeshRebuildTopology = 4,
+    MeshRebuildPointsOnGPU = 8
   };
   vtkSetMacro(MeshRebuild, int);
   vtkGetMacro(MeshRebuild, int);

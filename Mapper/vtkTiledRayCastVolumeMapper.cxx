@@ -157,6 +157,20 @@ void vtkTiledRayCastVolumeMapper::Update()
 }
 
 //------------------------------------------------------------------------------
+const char* vtkTiledRayCastVolumeMapper::GetPointUpdateAsString()
+{
+  switch (this->PointUpdate)
+  {
+    case CPU_POINT_UPDATE:
+      return "CPU";
+    case GPU_POINT_UPDATE:
+      return "GPU";
+    default:
+      return "Automatic";
+  }
+}
+
+//------------------------------------------------------------------------------
 const char* vtkTiledRayCastVolumeMapper::GetPipelineAsString()
 {
   switch (this->Pipeline)
@@ -178,6 +192,7 @@ void vtkTiledRayCastVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "MeshLayout: " << this->GetMeshLayoutAsString() << "\n";
   os << indent << "SpatialOrdering: " << (this->SpatialOrdering ? "On" : "Off") << "\n";
+  os << indent << "PointUpdate: " << this->GetPointUpdateAsString() << "\n";
   os << indent << "Pipeline: " << this->GetPipelineAsString() << "\n";
   os << indent << "TetsPerPass: " << this->TetsPerPass << "\n";
   os << indent << "OcclusionQueryInterval: " << this->OcclusionQueryInterval << "\n";

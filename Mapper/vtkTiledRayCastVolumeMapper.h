@@ -183,6 +183,50 @@ public:
   ///@}
 
   /**
+   * Where a deforming mesh's points are updated, in the frames where only they moved (same
+   * cells, same scalars).
+   */
+  enum PointUpdates
+  {
+    /**
+     * On the GPU where the OpenGL renderer is a GPU, on the CPU under a software rasteriser
+     * (Mesa's llvmpipe: the GPU's passes would run on the same cores, in double precision
+     * emulated, 3-4 times slower than the CPU's rebuild, docs/benchmarks.md).
+     */
+    AUTOMATIC_POINT_UPDATE = 0,
+    /**
+     * The CPU rebuilds the points (positions, orientation and degeneracy, the layout's point
+     * texels) and uploads the point texels, 16 B a point.
+     */
+    CPU_POINT_UPDATE = 1,
+    /**
+     * The input's coordinates go to the GPU as they are (float or double), and compute shaders
+     * check every tetrahedron's orientation and degeneracy as a full build would (in double
+     * precision) and write the shifted points into the layout's point texels in place. A frame in
+     * which a tetrahedron turned inside out or became flat (or back), or a coordinate is not
+     * finite, is rebuilt on the CPU as with CPU_POINT_UPDATE; so is, after the GPU's update, the
+     * CPU's copy of the points in a frame where the automatic integration makes its choice again
+     * (it samples the mesh on the CPU). Needs the compact layout and OpenGL 4.3 (the CPU updates
+     * the points otherwise).
+     */
+    GPU_POINT_UPDATE = 2
+  };
+
+  ///@{
+  /**
+   * Where a deforming mesh's points are updated (see PointUpdates). Default
+   * AUTOMATIC_POINT_UPDATE. The statistics say what each frame did
+   * (vtkTiledRayCastStatistics::GetMeshRebuild: MeshRebuildPointsOnGPU, MeshRebuildPoints).
+   */
+  vtkSetClampMacro(PointUpdate, int, AUTOMATIC_POINT_UPDATE, GPU_POINT_UPDATE);
+  vtkGetMacro(PointUpdate, int);
+  void SetPointUpdateToAutomatic() { this->SetPointUpdate(AUTOMATIC_POINT_UPDATE); }
+  void SetPointUpdateToCPU() { this->SetPointUpdate(CPU_POINT_UPDATE); }
+  void SetPointUpdateToGPU() { this->SetPointUpdate(GPU_POINT_UPDATE); }
+  const char* GetPointUpdateAsString();
+  ///@}
+
+  /**
    * Which GPU pipeline casts the rays.
    */
   enum Pipelines
@@ -492,6 +536,7 @@ protected:
   int IntegrationMode = AUTOMATIC_INTEGRATION;
   int MeshLayout = COMPACT_LAYOUT;
   bool SpatialOrdering = true;
+  int PointUpdate = AUTOMATIC_POINT_UPDATE;
   int Pipeline = AUTOMATIC_PIPELINE;
   int TetsPerPass = 0;
   int OcclusionQueryInterval = 4;

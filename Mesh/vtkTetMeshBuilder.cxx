@@ -107,6 +107,30 @@ const char* vtkTetMeshBuilder::GetRebuildAsString(int rebuild)
 }
 
 //------------------------------------------------------------------------------
+int vtkTetMeshBuilder::GetPendingRebuild(vtkDataSet* input)
+{
+  const vtkTetMeshBuildState& state = *this->State;
+  std::vector<Stamp> topology;
+  vtkTetMeshBuildState::GetTopologyStamps(input, topology);
+  const bool full = !state.Valid || state.Input != input || state.TopologyStamps != topology ||
+    state.NumberOfPoints != (input ? input->GetNumberOfPoints() : -1) ||
+    state.SpatialOrdering != this->SpatialOrdering || state.PointOrdering != this->PointOrdering ||
+    state.DegeneracyTolerance != this->DegeneracyTolerance;
+  if (full)
+  {
+    return RebuildAll;
+  }
+  int cellFlag = -1;
+  vtkDataArray* scalars = this->ScalarSelection->GetScalars(input, cellFlag);
+  const bool pointsChanged = state.PointsStamp != vtkTetMeshBuildState::GetPointsStamp(input);
+  const bool scalarsChanged = state.ScalarsStamp != vtkTetMeshBuildState::MakeStamp(scalars) ||
+    state.ScalarsCellFlag != (scalars ? cellFlag : -1) ||
+    !state.ScalarSettings->HasSameSettings(this->ScalarSelection);
+  return (pointsChanged ? RebuildPoints : RebuildNothing) |
+    (scalarsChanged ? RebuildScalars : RebuildNothing);
+}
+
+//------------------------------------------------------------------------------
 vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
 {
   const double start = vtkTimerLog::GetUniversalTime();
@@ -115,24 +139,20 @@ vtkTetMesh* vtkTetMeshBuilder::Build(vtkDataSet* input)
   this->LastRebuild = RebuildNothing;
 
   // What changed since the last build?
+  const int pending = this->GetPendingRebuild(input);
+  const bool full = (pending & RebuildTopology) != 0;
+  const bool pointsChanged = (pending & RebuildPoints) != 0;
+  bool scalarsChanged = (pending & RebuildScalars) != 0;
+  if (pending == RebuildNothing)
+  {
+    this->LastBuildTime = vtkTimerLog::GetUniversalTime() - start;
+    return mesh;
+  }
   std::vector<Stamp> topology;
   vtkTetMeshBuildState::GetTopologyStamps(input, topology);
   const Stamp pointsStamp = vtkTetMeshBuildState::GetPointsStamp(input);
   int cellFlag = -1;
   vtkDataArray* scalars = this->ScalarSelection->GetScalars(input, cellFlag);
-  const bool full = !state.Valid || state.Input != input || state.TopologyStamps != topology ||
-    state.NumberOfPoints != (input ? input->GetNumberOfPoints() : -1) ||
-    state.SpatialOrdering != this->SpatialOrdering || state.PointOrdering != this->PointOrdering ||
-    state.DegeneracyTolerance != this->DegeneracyTolerance;
-  const bool pointsChanged = full || state.PointsStamp != pointsStamp;
-  bool scalarsChanged = full || state.ScalarsStamp != vtkTetMeshBuildState::MakeStamp(scalars) ||
-    state.ScalarsCellFlag != (scalars ? cellFlag : -1) ||
-    !state.ScalarSettings->HasSameSettings(this->ScalarSelection);
-  if (!pointsChanged && !scalarsChanged)
-  {
-    this->LastBuildTime = vtkTimerLog::GetUniversalTime() - start;
-    return mesh;
-  }
 
   ReportProgress(this, 0.0);
   bool doFull = full;

@@ -152,6 +152,14 @@ public:
   ///@}
 
   /**
+   * What Build(input) would rebuild now (RebuildFlags), without doing it: RebuildAll when the
+   * cells, the point count or a setting changed (or nothing was built yet). A renderer that moves
+   * a deforming mesh's points by other means (on the GPU) asks this to know that only the
+   * points moved; Build() catches up with them later.
+   */
+  int GetPendingRebuild(vtkDataSet* input);
+
+  /**
    * Bring the mesh up to date with `input` and the settings, doing only what changed (see
    * above), and return it. Never null; check GetMesh()->GetReport()->GetUsable().
    */

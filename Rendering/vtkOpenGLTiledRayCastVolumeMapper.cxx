@@ -16,6 +16,8 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
 #include "vtkTetMeshCompactLayout.h"
@@ -167,7 +169,12 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
 {
   std::string error;
   this->MemoryBudget.Update(this->Context.Window, this->Self->GetMaximumGPUMemory(),
-    this->MeshTextures.GetBytes() + this->VisibleMesh.GetBytes());
+    this->MeshTextures.GetBytes() + this->VisibleMesh.GetBytes() + this->PointMotion.GetBytes());
+  if (this->MovePointsOnGPU(dataObject, property))
+  {
+    return true;
+  }
+  this->MovedPoints = nullptr; // the CPU's mesh is current again
   if (!this->Reported(this->Mesh.Update(dataObject, property, this->Context.MaxTextureSize,
                         this->Context.MaxTextureBufferSize, this->MemoryBudget, error),
         error))
@@ -179,6 +186,95 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateMesh(
     this->MeshTextures.Invalidate();
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+// A deforming mesh whose points alone moved: they go straight to the GPU
+// (vtkTiledRayCastPointMotion). False where the CPU must update the mesh (Mesh.Update).
+bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MovePointsOnGPU(
+  vtkDataObject* dataObject, vtkVolumeProperty* property)
+{
+  vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
+  // The point texels are written in place: the textures must hold the layout as it is.
+  const int where = self->GetPointUpdate();
+  if (where == vtkTiledRayCastVolumeMapper::CPU_POINT_UPDATE ||
+    (where == vtkTiledRayCastVolumeMapper::AUTOMATIC_POINT_UPDATE &&
+      this->Context.SoftwareRasterizer) ||
+    !this->Context.ComputeSupported || this->WarnedPointMotion ||
+    !this->MeshTextures.IsCurrent(this->Mesh.GetLayout()))
+  {
+    return false;
+  }
+  vtkPointSet* input = this->Mesh.GetMovedPointsOnly(dataObject, property,
+    this->Context.MaxTextureSize, this->Context.MaxTextureBufferSize, this->MemoryBudget);
+  if (!input)
+  {
+    return false;
+  }
+  vtkTiledRayCastStatistics* stats = self->Statistics;
+  vtkPoints* points = input->GetPoints();
+  if (this->MovedPoints == points && this->MovedPointsTime == points->GetMTime())
+  {
+    stats->SetMeshRebuild(0); // moved there already: only the camera changed
+    stats->SetMeshBuildTime(0.0);
+    return true;
+  }
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
+  double shift[3];
+  vtkTiledRayCastMeshBuild::ShiftOf(input, shift);
+  double longestEdge = 0.0;
+  vtkIdType uploaded = 0;
+  const vtkTiledRayCastPointMotion::Result result = this->PointMotion.Move(this->Context.Window,
+    points->GetData(), this->Mesh.GetMesh(), this->Mesh.GetLayout(), this->MeshTextures,
+    this->Mesh.GetDegeneracyTolerance(), shift, longestEdge, uploaded);
+  stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
+  const std::string& reason = this->PointMotion.GetReason();
+  if (result == vtkTiledRayCastPointMotion::Unavailable && !this->WarnedPointMotion &&
+    reason.rfind("Internal error", 0) == 0)
+  {
+    // A shader this GPU cannot build is a defect to hear of; the CPU rebuilds the points from
+    // now on.
+    vtkWarningWithObjectMacro(self,
+      << "Moving the points on the GPU failed (" << reason << "); the CPU rebuilds them instead.");
+    this->WarnedPointMotion = true;
+  }
+  if (result != vtkTiledRayCastPointMotion::Moved)
+  {
+    return false;
+  }
+  this->MovedPoints = points;
+  this->MovedPointsTime = points->GetMTime();
+  timer->StopTimer();
+  this->Mesh.MovedPoints(input, longestEdge, timer->GetElapsedTime());
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The mesh on the CPU with the points the GPU holds (after MovePointsOnGPU, its last build's):
+// for what samples it on the CPU (the automatic integration's choice).
+vtkTetMesh* vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CatchUpMesh(
+  vtkDataObject* dataObject, vtkVolumeProperty* property)
+{
+  if (this->MovedPoints)
+  {
+    this->MovedPoints = nullptr;
+    vtkTiledRayCastStatistics* stats = this->Self->Statistics;
+    const double gpuTime = stats->GetMeshBuildTime();
+    std::string error;
+    if (!this->Reported(this->Mesh.Update(dataObject, property, this->Context.MaxTextureSize,
+                          this->Context.MaxTextureBufferSize, this->MemoryBudget, error),
+          error) ||
+      !this->UploadMesh(this->Context.Window))
+    {
+      return nullptr;
+    }
+    // Both happened this frame: the points moved on the GPU, then the CPU caught up.
+    stats->SetMeshRebuild(
+      stats->GetMeshRebuild() | vtkTiledRayCastStatistics::MeshRebuildPointsOnGPU);
+    stats->SetMeshBuildTime(stats->GetMeshBuildTime() + gpuTime);
+  }
+  return this->Mesh.GetMesh();
 }
 
 //------------------------------------------------------------------------------
@@ -212,6 +308,11 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   frame.MaxTextureSize = this->Context.MaxTextureSize;
   frame.Max3DTextureSize = this->Context.Max3DTextureSize;
   frame.WaitForChoice = this->Self->SynchronousStatistics;
+  if (this->MovedPoints)
+  {
+    vtkDataObject* input = this->FrameInput;
+    frame.CurrentMesh = [this, input, property]() { return this->CatchUpMesh(input, property); };
+  }
   std::string error;
   return this->Reported(this->Integration.Update(frame, property, error), error);
 }
@@ -359,6 +460,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::ReleaseGraphicsResources(v
 {
   this->Compute.ReleaseGraphicsResources(window);
   this->MeshTextures.ReleaseGraphicsResources(this->Context.Window);
+  this->PointMotion.ReleaseGraphicsResources();
+  this->MovedPoints = nullptr;
   this->VisibleMesh.ReleaseGraphicsResources(window);
   this->Integration.ReleaseGraphicsResources(window);
   this->Fragment.ReleaseGraphicsResources(window);
@@ -436,6 +539,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   // CPU work: only what changed.
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   this->FrameVolume = vol;
+  this->FrameInput = input;
   const int width = this->Viewport[2];
   const int height = this->Viewport[3];
   if (!this->UpdateMesh(input, property))
@@ -697,7 +801,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
   stats->SetNumberOfGroupedVolumes(impl->GroupSize);
   stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
-  const vtkIdType meshBytes = impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes();
+  const vtkIdType meshBytes =
+    impl->MeshTextures.GetBytes() + impl->VisibleMesh.GetBytes() + impl->PointMotion.GetBytes();
   stats->SetMeshBytes(meshBytes);
   stats->SetMeshBytesPerTetrahedron(
     impl->Mesh.NumberOfTets > 0 ? static_cast<double>(meshBytes) / impl->Mesh.NumberOfTets : 0.0);

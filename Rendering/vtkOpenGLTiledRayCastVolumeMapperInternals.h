@@ -38,6 +38,7 @@
 #include "vtkTiledRayCastOpaqueDepth.h"          // For vtkTiledRayCastOpaqueDepth
 #include "vtkTiledRayCastPeelAccumulation.h"     // For vtkTiledRayCastPeelAccumulation
 #include "vtkTiledRayCastPhaseTimers.h"          // For vtkTiledRayCastPhaseTimers
+#include "vtkTiledRayCastPointMotion.h"          // For vtkTiledRayCastPointMotion
 #include "vtkTiledRayCastSampleDistance.h"       // For vtkTiledRayCastSampleDistance
 #include "vtkTiledRayCastShaderComposition.h"    // For vtkTiledRayCastShaderComposition
 #include "vtkTiledRayCastUniforms.h"             // For vtkTiledRayCastUniforms
@@ -103,6 +104,12 @@ public:
   vtkTiledRayCastMeshBuild Mesh;
   vtkTiledRayCastMeshTextures MeshTextures;
   vtkTiledRayCastMemoryBudget MemoryBudget; // what the mesh may take on the GPU
+  // A deforming mesh's points moved on the GPU, and the input points last moved there (not
+  // held; with their time): the CPU mesh holds older ones until Mesh.Update() catches up.
+  vtkTiledRayCastPointMotion PointMotion;
+  const void* MovedPoints = nullptr;
+  vtkMTimeType MovedPointsTime = 0;
+  bool WarnedPointMotion = false;
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
   vtkTiledRayCastVisibleMesh VisibleMesh;
 
@@ -158,7 +165,8 @@ public:
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
-  vtkVolume* FrameVolume = nullptr; // the volume of the frame being drawn (not held)
+  vtkVolume* FrameVolume = nullptr;    // the volume of the frame being drawn (not held)
+  vtkDataObject* FrameInput = nullptr; // its input (not held)
   vtkTiledRayCastLighting Lighting;
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   int Viewport[4] = { 0, 0, 0, 0 };
@@ -188,6 +196,8 @@ public:
   }
   bool CheckContext(vtkOpenGLRenderWindow* window) { return this->Context.Check(window); }
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
+  bool MovePointsOnGPU(vtkDataObject* input, vtkVolumeProperty* property);
+  vtkTetMesh* CatchUpMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdateVisibleMesh(vtkOpenGLRenderWindow* window);

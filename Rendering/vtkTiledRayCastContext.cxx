@@ -16,6 +16,7 @@
 #include "vtk_glew.h"
 
 #include <sstream>
+#include <string>
 
 //------------------------------------------------------------------------------
 // The programs need explicit output locations (several render targets, written by name): GLSL
@@ -73,6 +74,10 @@ bool vtkTiledRayCastContext::Check(vtkOpenGLRenderWindow* window)
     window->GetState()->vtkglGetIntegerv(
       GL_MAX_COMPUTE_TEXTURE_IMAGE_UNITS, &this->MaxComputeTextureUnits);
   }
+  const std::string renderer = window->GetState()->GetRenderer();
+  this->SoftwareRasterizer = renderer.find("llvmpipe") != std::string::npos ||
+    renderer.find("softpipe") != std::string::npos ||
+    renderer.find("SwiftShader") != std::string::npos;
   this->Usable = true;
   return true;
 }

@@ -55,6 +55,8 @@ public:
   int Max3DTextureSize = 0;
   bool ComputeSupported = false;  // OpenGL 4.3
   int MaxComputeTextureUnits = 0; // a compute shader's samplers (the bound of a group's volumes)
+  bool SoftwareRasterizer =
+    false; // Mesa's llvmpipe or softpipe, SwiftShader: "GPU" work on the CPU
 };
 
 #endif

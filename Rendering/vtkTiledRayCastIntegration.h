@@ -33,8 +33,9 @@
 #include "vtkTiledRayCastVolumeMapper.h"         // For the integration modes
 #include "vtkType.h"                             // For vtkIdType
 
-#include <string> // For std::string
-#include <vector> // For std::vector
+#include <functional> // For std::function
+#include <string>     // For std::string
+#include <vector>     // For std::vector
 
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -67,6 +68,10 @@ public:
     // Whether a choice of the automatic mode in progress is waited for (SynchronousStatistics);
     // the first choice always is.
     bool WaitForChoice = false;
+    // The mesh with its current points, where Mesh may hold older ones (a deforming mesh's
+    // points moved on the GPU, vtkTiledRayCastPointMotion): called only when a new automatic
+    // choice starts, which samples the mesh on the CPU; null when Mesh is current.
+    std::function<vtkTetMesh*()> CurrentMesh;
   };
 
   /**

@@ -12,6 +12,8 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkDataSet.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
 #include "vtkTetMesh.h"
 #include "vtkTetMeshBuilder.h"
 #include "vtkTetMeshCompactLayout.h"
@@ -203,20 +205,89 @@ bool vtkTiledRayCastMeshBuild::Update(vtkDataObject* dataObject, vtkVolumeProper
     this->MeshTime = mesh->GetMTime();
     this->NumberOfTets = mesh->GetNumberOfTetrahedra();
     this->HasCellScalars = mesh->GetHasCellScalars();
-    mesh->GetShift(this->Shift);
-    double bounds[6];
+    double bounds[6], shift[3];
     mesh->GetBounds(bounds);
-    for (int i = 0; i < 6; ++i)
-    {
-      this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
-    }
+    mesh->GetShift(shift);
     mesh->GetScalarRange(this->ScalarRange);
     this->LongestEdge = mesh->GetLongestEdge();
-    const double volume =
-      (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
-    // The edge of a regular tetrahedron of the mean volume: a typical segment length.
-    this->TypicalEdge =
-      this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
+    this->SetFrameValues(bounds, shift);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastMeshBuild::SetFrameValues(const double bounds[6], const double shift[3])
+{
+  std::copy(shift, shift + 3, this->Shift);
+  for (int i = 0; i < 6; ++i)
+  {
+    this->MeshBounds[i] = bounds[i] - this->Shift[i / 2];
+  }
+  const double volume = (bounds[1] - bounds[0]) * (bounds[3] - bounds[2]) * (bounds[5] - bounds[4]);
+  // The edge of a regular tetrahedron of the mean volume: a typical segment length.
+  this->TypicalEdge =
+    this->NumberOfTets > 0 ? std::cbrt(6.0 * std::sqrt(2.0) * volume / this->NumberOfTets) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+vtkPointSet* vtkTiledRayCastMeshBuild::GetMovedPointsOnly(vtkDataObject* dataObject,
+  vtkVolumeProperty* property, int maxTextureSize, int maxTextureBufferSize,
+  const vtkTiledRayCastMemoryBudget& budget)
+{
+  vtkTiledRayCastVolumeMapper* self = this->Mapper;
+  vtkTetMeshBuilder* builder = this->Builder;
+  vtkTetMesh* mesh = builder->GetMesh();
+  // The layout and limits Update() would use now must be those of the last Update().
+  const int userTexture = self->GetMaximumTextureSize();
+  const vtkIdType userBuffer = self->GetMaximumTextureBufferSize();
+  const int textureLimit = userTexture > 0 ? std::min(userTexture, maxTextureSize) : maxTextureSize;
+  const vtkIdType bufferLimit =
+    userBuffer > 0 ? std::min<vtkIdType>(userBuffer, maxTextureBufferSize) : maxTextureBufferSize;
+  if (!this->Layout || !this->Layout->GetValid() ||
+    self->GetMeshLayout() != vtkTiledRayCastVolumeMapper::COMPACT_LAYOUT ||
+    this->LayoutKind != vtkTiledRayCastVolumeMapper::COMPACT_LAYOUT ||
+    textureLimit != this->LayoutTextureLimit || bufferLimit != this->TextureBufferLimit ||
+    budget.GetUserLimit() != this->BudgetUserLimit || !mesh || !mesh->GetReport()->GetUsable() ||
+    builder->GetSpatialOrdering() != self->GetSpatialOrdering())
+  {
+    return nullptr;
+  }
+  std::string error;
+  vtkPointSet* input =
+    vtkPointSet::SafeDownCast(this->Input.Prepare(self, dataObject, property, builder, error));
+  if (!input || input != this->BudgetInput || !input->GetPoints() ||
+    builder->GetPendingRebuild(input) != vtkTetMeshBuilder::RebuildPoints)
+  {
+    return nullptr;
+  }
+  return input;
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastMeshBuild::ShiftOf(vtkPointSet* input, double shift[3])
+{
+  // The centre of the bounds, as the builder shifts a mesh (vtkTetMeshCellExtraction).
+  const double* bounds = input->GetPoints()->GetBounds();
+  for (int c = 0; c < 3; ++c)
+  {
+    shift[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastMeshBuild::MovedPoints(vtkPointSet* input, double longestEdge, double seconds)
+{
+  double shift[3];
+  ShiftOf(input, shift);
+  this->LongestEdge = longestEdge;
+  this->SetFrameValues(input->GetPoints()->GetBounds(), shift);
+  vtkTiledRayCastStatistics* stats = this->Mapper->GetStatistics();
+  stats->SetMeshBuildTime(seconds);
+  stats->SetMeshRebuild(vtkTiledRayCastStatistics::MeshRebuildPointsOnGPU);
+}
+
+//------------------------------------------------------------------------------
+double vtkTiledRayCastMeshBuild::GetDegeneracyTolerance() const
+{
+  return this->Builder->GetDegeneracyTolerance();
 }

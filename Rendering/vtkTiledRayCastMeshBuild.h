@@ -38,6 +38,7 @@
 
 class vtkCallbackCommand;
 class vtkDataObject;
+class vtkPointSet;
 class vtkTetMesh;
 class vtkTetMeshBuilder;
 class vtkTetMeshLayout;
@@ -59,6 +60,26 @@ public:
    */
   bool Update(vtkDataObject* input, vtkVolumeProperty* property, int maxTextureSize,
     int maxTextureBufferSize, vtkTiledRayCastMemoryBudget& budget, std::string& error);
+
+  /**
+   * The input's points when, since the last Update(), they alone moved (same cells, scalars
+   * and settings; a plain grid, the compact layout, the same limits): the mapper may then move
+   * them on the GPU (vtkTiledRayCastPointMotion) and call MovedPoints() instead of Update().
+   * Null otherwise: Update() must run.
+   */
+  vtkPointSet* GetMovedPointsOnly(vtkDataObject* input, vtkVolumeProperty* property,
+    int maxTextureSize, int maxTextureBufferSize, const vtkTiledRayCastMemoryBudget& budget);
+
+  /**
+   * After the points of `input` were moved on the GPU: the frame's bounds, shift and edge
+   * lengths from the new points (`longestEdge` measured on the GPU), and the statistics
+   * (MeshRebuildPointsOnGPU, `seconds` of build time). Shift() gives the shift to move them by.
+   */
+  void MovedPoints(vtkPointSet* input, double longestEdge, double seconds);
+  static void ShiftOf(vtkPointSet* input, double shift[3]);
+
+  /// The builder's degeneracy tolerance (what a full build classifies tetrahedra by).
+  double GetDegeneracyTolerance() const;
 
   /**
    * Whether the layout object was replaced since the last call (its arrays must all be
@@ -104,6 +125,7 @@ private:
   vtkIdType BudgetPoints = -1;
   vtkIdType BudgetUserLimit = -1;
   bool NewLayout = false;
+  void SetFrameValues(const double bounds[6], const double shift[3]);
 };
 
 #endif

@@ -205,6 +205,30 @@ void vtkTiledRayCastMeshTextures::UploadTextureBuffers(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTiledRayCastMeshTextures::IsCurrent(vtkTetMeshLayout* layout) const
+{
+  return layout && !this->Textures.empty() && this->UploadedTime > 0 &&
+    layout->GetMTime() <= this->UploadedTime &&
+    static_cast<int>(this->Textures.size()) == layout->GetNumberOfArrays();
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkTiledRayCastMeshTextures::GetBufferHandle(int array, int part) const
+{
+  if (array < 0 || array >= static_cast<int>(this->Textures.size()))
+  {
+    return 0;
+  }
+  const MeshTexture* t = this->Textures[array].get();
+  if (t->Kind != vtkTetMeshLayout::TextureBuffer || part < 0 ||
+    part >= static_cast<int>(t->Parts.size()))
+  {
+    return 0;
+  }
+  return static_cast<unsigned int>(t->Parts[part]->Buffer->GetHandle());
+}
+
+//------------------------------------------------------------------------------
 int vtkTiledRayCastMeshTextures::GetNumberOfTextures() const
 {
   size_t count = 0;

@@ -57,6 +57,18 @@ public:
    */
   void Invalidate() { this->UploadedTime = 0; }
 
+  /**
+   * Whether every array of `layout` is on the GPU as the layout holds it now (Update would upload
+   * nothing).
+   */
+  bool IsCurrent(vtkTetMeshLayout* layout) const;
+
+  /**
+   * The GL buffer behind part `part` of texture-buffer array `array` (0 when there is none), for
+   * a compute shader that writes the array in place (vtkTiledRayCastPointMotion).
+   */
+  unsigned int GetBufferHandle(int array, int part) const;
+
   /// Bytes held on the GPU.
   vtkIdType GetBytes() const { return this->Bytes; }
 

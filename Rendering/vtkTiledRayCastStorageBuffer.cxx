@@ -81,6 +81,20 @@ void vtkTiledRayCastStorageBuffer::BindBase(unsigned int index) const
 }
 
 //------------------------------------------------------------------------------
+void vtkTiledRayCastStorageBuffer::BindBufferBase(unsigned int index, unsigned int handle)
+{
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, index, handle);
+}
+
+//------------------------------------------------------------------------------
+size_t vtkTiledRayCastStorageBuffer::GetMaximumBindingSize()
+{
+  GLint64 size = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &size);
+  return size > 0 ? static_cast<size_t>(size) : 0;
+}
+
+//------------------------------------------------------------------------------
 void vtkTiledRayCastStorageBuffer::CopyTo(vtkTiledRayCastStorageBuffer& destination, size_t offset,
   size_t destinationOffset, size_t bytes) const
 {

@@ -55,6 +55,17 @@ public:
    */
   void BindBase(unsigned int index) const;
 
+  ///@{
+  /**
+   * Bind another object's GL buffer (the handle of a vtkOpenGLBufferObject, such as a texture
+   * buffer's storage) to storage-buffer binding point `index`, so that a compute shader writes
+   * what the other passes read as a texture buffer; and the largest buffer a shader may bind
+   * (GL_MAX_SHADER_STORAGE_BLOCK_SIZE, in bytes).
+   */
+  static void BindBufferBase(unsigned int index, unsigned int handle);
+  static size_t GetMaximumBindingSize();
+  ///@}
+
   /**
    * Copy `bytes` bytes at `offset` into `destination` at `destinationOffset`, on the GPU
    * (issue a buffer-update barrier first if shaders wrote them).
