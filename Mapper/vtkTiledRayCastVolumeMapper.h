@@ -191,7 +191,7 @@ public:
     /**
      * On the GPU where the OpenGL renderer is a GPU, on the CPU under a software rasteriser
      * (Mesa's llvmpipe: the GPU's passes would run on the same cores, in double precision
-     * emulated, 3-4 times slower than the CPU's rebuild, docs/benchmarks.md).
+     * emulated, 2.5-4 times slower than the CPU's rebuild, docs/benchmarks.md).
      */
     AUTOMATIC_POINT_UPDATE = 0,
     /**

@@ -45,7 +45,8 @@ mkdir -p "$root/build" "$root/lib" "$root/bin"
 # --- 1. The build tree, without objects --------------------------------------------------------
 (
   cd "$build"
-  find . -name CMakeFiles -prune -o -name CTestTestfile.cmake -print
+  # Not the Debian 13 root that make test-debian13 keeps here (another build, other libraries).
+  find . \( -name CMakeFiles -o -path ./debian13 \) -prune -o -name CTestTestfile.cmake -print
   [ -f DartConfiguration.tcl ] && echo ./DartConfiguration.tcl
   [ -d bin ] && find bin -type f
   # The benchmark programs (docs/benchmarks.md), which the GPU runs too.

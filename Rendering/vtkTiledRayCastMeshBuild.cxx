@@ -252,6 +252,12 @@ vtkPointSet* vtkTiledRayCastMeshBuild::GetMovedPointsOnly(vtkDataObject* dataObj
   {
     return nullptr;
   }
+  // A composite input is merged into a new grid by Update() (not before it: merging is the
+  // cost this path avoids).
+  if (!vtkPointSet::SafeDownCast(dataObject))
+  {
+    return nullptr;
+  }
   std::string error;
   vtkPointSet* input =
     vtkPointSet::SafeDownCast(this->Input.Prepare(self, dataObject, property, builder, error));
