@@ -3,14 +3,15 @@
 
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 \
         Examples/Python/deforming_mesh.py [--mesh FILE.vtu] [--size 512] [--frames 24] \
-        [--mode wave|invert] [--output-dir frames]
+        [--mode wave|invert] [--point-update automatic|cpu|gpu] [--output-dir frames]
 
 Every point of the mesh moves every frame: "wave" sends a travelling wave along x through z,
 "invert" flattens the mesh along z, turns it inside out and brings it back (every tetrahedron
 inverts and recovers; the mapper reorients them, as normal service). After each move the grid is
-marked modified and the window rendered: vtkTiledRayCastVolumeMapper rebuilds only the points of
-its GPU layout when the topology is unchanged. Prints each frame's time split as the mapper's
-statistics report it. No X server is needed (`import tiledraycast` makes vtkRenderWindow() the
+marked modified and the window rendered: vtkTiledRayCastVolumeMapper updates only the points of
+its GPU layout when the topology is unchanged, on the GPU (the input's coordinates uploaded as
+they are) or on the CPU (PointUpdate; automatic: the GPU where the renderer is one). Prints each
+frame's time split as the mapper's statistics report it, and what it rebuilt where. No X server is needed (`import tiledraycast` makes vtkRenderWindow() the
 EGL window).
 """
 import argparse
@@ -34,7 +35,7 @@ from vtkmodules.vtkRenderingCore import (
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 import tiledraycast
-from tiledraycast import vtkTiledRayCastVolumeMapper
+from tiledraycast import vtkTiledRayCastStatistics, vtkTiledRayCastVolumeMapper
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DEFAULT_MESH = os.path.join(HERE, "..", "..", "Testing", "Data", "Meshes", "bluntfin_tets.vtu")
@@ -51,12 +52,27 @@ def deform(rest, points, centre, size, mode, phase):
     points.Modified()
 
 
+def rebuilt(flags):
+    """What the mapper's statistics say it rebuilt of the mesh (MeshRebuild flags), in words."""
+    if flags & vtkTiledRayCastStatistics.MeshRebuildTopology:
+        return "rebuilt whole on the CPU"
+    words = []
+    if flags & vtkTiledRayCastStatistics.MeshRebuildPointsOnGPU:
+        words.append("points moved on the GPU")
+    if flags & vtkTiledRayCastStatistics.MeshRebuildPoints:
+        words.append("points rebuilt on the CPU")
+    if flags & vtkTiledRayCastStatistics.MeshRebuildScalars:
+        words.append("scalars rebuilt")
+    return ", ".join(words) or "unchanged"
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--mesh", default=DEFAULT_MESH)
     parser.add_argument("--size", type=int, default=512)
     parser.add_argument("--frames", type=int, default=24)
     parser.add_argument("--mode", choices=("wave", "invert"), default="wave")
+    parser.add_argument("--point-update", choices=("automatic", "cpu", "gpu"), default="automatic")
     parser.add_argument("--output-dir", default="frames")
     args = parser.parse_args()
     if args.size <= 0 or args.frames <= 0:
@@ -97,6 +113,9 @@ def main():
     mapper = vtkTiledRayCastVolumeMapper()
     mapper.SetInputData(grid)
     mapper.SynchronousStatisticsOn()  # this frame's GPU time, for the printout
+    mapper.SetPointUpdate({"automatic": vtkTiledRayCastVolumeMapper.AUTOMATIC_POINT_UPDATE,
+                           "cpu": vtkTiledRayCastVolumeMapper.CPU_POINT_UPDATE,
+                           "gpu": vtkTiledRayCastVolumeMapper.GPU_POINT_UPDATE}[args.point_update])
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)
@@ -128,8 +147,9 @@ def main():
         window.Render()
         done = time.perf_counter()
         # The statistics describe the frame just rendered: read them before anything renders again.
-        line = ("frame %d: move %.1f ms, render %.1f ms (mesh build %.1f ms, GPU %.1f ms, "
+        line = ("frame %d: move %.1f ms, render %.1f ms (mesh %s in %.1f ms, GPU %.1f ms, "
                 "%.2f MB uploaded)" % (frame, 1000 * (moved - start), 1000 * (done - moved),
+                                       rebuilt(stats.GetMeshRebuild()),
                                        1000 * stats.GetMeshBuildTime(), stats.GetTotalGPUTime(),
                                        stats.GetUploadedBytes() / 2.0**20))
         grab.Modified()

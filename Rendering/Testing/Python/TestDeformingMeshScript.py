@@ -1,6 +1,7 @@
 """Examples/Python/deforming_mesh.py run as a user runs it: both motions on spx_vistrails for a
 few frames; each writes one PNG per frame at the asked size, and says per frame what the mapper
-rebuilt (the points only: well under the first frame's upload) and drew. Bad sizes are refused.
+rebuilt (the points only: well under the first frame's upload), where (the GPU or the CPU, as
+--point-update asks) and drew. Bad sizes are refused.
 """
 import os
 import re
@@ -34,6 +35,18 @@ class DeformingMeshScript(unittest.TestCase):
                 # Frame 0 uploads the whole mesh; a points-only rebuild uploads the points.
                 self.assertGreater(uploads[0], 0.0)
                 self.assertTrue(any(u < uploads[0] for u in uploads[1:]), stdout)
+
+    def test_point_update(self):
+        for where, said in (("gpu", "points moved on the GPU"), ("cpu", "points rebuilt on the CPU")):
+            with tempfile.TemporaryDirectory() as out:
+                code, stdout, stderr = run("--point-update", where, "--frames", "3", "--size", "64",
+                                           "--output-dir", out)
+                self.assertEqual(code, 0, stderr)
+                lines = [line for line in stdout.splitlines() if line.startswith("frame ")]
+                self.assertEqual(len(lines), 3, stdout)
+                self.assertIn("rebuilt whole on the CPU", lines[0])
+                for line in lines[1:]:
+                    self.assertIn(said, line)
 
     def test_bad_size(self):
         code, _, stderr = run("--size", "0", "--frames", "2")
