@@ -45,6 +45,17 @@ if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then
   sudo="sudo"
 fi
 
+# The package lists must know ParaView (a fresh system, or a root made by mmdebstrap, may have
+# none): read them again once if they do not.
+if ! apt-cache show "${packages[0]}" >/dev/null 2>&1; then
+  if [ "$(id -u)" -ne 0 ] && [ -z "$sudo" ]; then
+    skip "the package lists do not know ${packages[0]}, and this is not root (apt-get update)"
+  fi
+  $sudo apt-get update -q >/dev/null 2>&1 || skip "apt-get update failed (no network?)"
+  apt-cache show "${packages[0]}" >/dev/null 2>&1 ||
+    skip "Debian $trc_debian's package lists have no ${packages[0]}"
+fi
+
 # The libraries that paraview and python3-paraview link, where missing: every "lib*" dependency
 # of theirs but alternatives (libqt5gui5 | libqt5gui5-gles: only the GUI needs either). The
 # Python and Qt tool dependencies are not needed by pvbatch, pvpython or the plugin's build.
