@@ -11,7 +11,8 @@
 # resolv.conf) and builds the plugin. Extra arguments go to ctest.
 #   Module/test-debian13.sh --shell     a shell in the root, with the same mounts
 #   Module/test-debian13.sh --bundle    the GPU bundle of the root's build (Module/bundle-gpu.sh
-#                                       run inside the root), into .bundle/debian13/
+#                                       run inside the root), into .bundle/debian13/; without
+#                                       Python unless TRC_BUNDLE_PYTHON=1
 # Needs root (chroot, mounts). Exit status: ctest's; 125 (skip) when Debian's archive cannot be
 # reached to make the root.
 set -euo pipefail
@@ -86,7 +87,12 @@ if [ "$mode" = bundle ]; then
   [ -f "$root/build/CTestTestfile.cmake" ] || { say "no build in the root: run make test-debian13 first"; exit 1; }
   mkdir -p "$here/.bundle/debian13" "$root/bundle"
   mount --bind "$here/.bundle/debian13" "$root/bundle" && mounted+=("$root/bundle")
+  # Without Python unless TRC_BUNDLE_PYTHON=1: the C++ tests (the mapper's among them) and the
+  # benchmark programs, in 26 MiB rather than 38 (docs/testing.md, "Debian 13").
+  no_python=1
+  [ -n "${TRC_BUNDLE_PYTHON:-}" ] && no_python=""
   chroot "$root" /usr/bin/env -u DISPLAY TRC_BUILD_DIR=/build TRC_BUNDLE_OUT=/bundle \
+    TRC_BUNDLE_NO_PYTHON="$no_python" TRC_BUNDLE_PY_MODULES="${TRC_BUNDLE_PY_MODULES:-}" \
     TRC_GIT_COMMIT="$(git -C "$here" rev-parse HEAD 2> /dev/null || echo unknown)" \
     /src/Module/bundle-gpu.sh
   exit 0
