@@ -1,12 +1,15 @@
 # The two commands of the README. Both install missing Debian packages, configure and build.
 #   make demo   render a tetrahedral mesh to a PNG and print what was done
 #   make test   run the whole test suite under ctest
-#   make paraview  fetch ParaView 5.11 privately, build the ParaView plugin, say how to load it
+#   make paraview  fetch ParaView privately (5.11 on Debian 12, 5.13 on Debian 13), build the
+#                  ParaView plugin, say how to load it
+# The three detect the release (Module/debian-release.sh): Debian 12 or 13, else a message.
 # Developer targets:
 #   make build      configure and build ./build only
 #   make sanitize   build ./build-asan with ASan and UBSan and run the tests under them
-#   make test-debian13  build and test the same sources against Debian 13's VTK 9.3, in a
-#                   Debian 13 root made and cached under build/debian13 (root, network)
+#   make test-debian13  build and test the same sources (the whole suite, ParaView 5.13's plugin
+#                   included) against Debian 13's VTK 9.3, in a Debian 13 root made and cached
+#                   under build/debian13 (root, network); ARGS=--bundle: its GPU bundle
 #   make install PREFIX=...
 .PHONY: demo test build sanitize install clean paraview test-debian13
 

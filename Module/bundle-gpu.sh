@@ -10,21 +10,28 @@
 #            libraries (libEGL.so.1, libGLdispatch.so.0, libOpenGL.so.0, libGLX.so.0, libGL.so.1),
 #            but no driver (Mesa's or NVIDIA's: glvnd loads the machine's own) and nothing of
 #            glibc (it must be the machine's, the dynamic loader included)
-#   py/      Debian's python3.11 with its standard library and the vtkmodules the tests import
-#            (the machine's python3.12 cannot load Debian's 3.11 extension modules)
+#   py/      Debian's python3 (3.11 on Debian 12, 3.13 on Debian 13) with its standard library and
+#            the vtkmodules the tests import (the machine's python3.12 cannot load Debian's
+#            extension modules)
 #   bin/     ctest, with the one CMake file it looks for
 #   MANIFEST where the build was made, and what the libraries need from glibc and libstdc++
 #
 # Usage: Module/bundle-gpu.sh            (after Module/build.sh; TRC_BUILD_DIR as for build.sh)
+#        TRC_BUNDLE_OUT=DIR ...          write DIR/tiledraycast-gpu.tar.xz (default .bundle)
+#        make test-debian13 ARGS=--bundle is the Debian 13 build's bundle: this script run inside
+#        the Debian 13 root (Module/test-debian13.sh --bundle), into .bundle/debian13/
 #        TRC_BUNDLE_NO_PYTHON=1 ...      leave Python out (its tests then skip with code 125)
 #        TRC_BUNDLE_PY_MODULES="vtkIOExodus ..."  more vtkmodules to include
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TRC_BUILD_DIR:-$here/build}"
-out="$here/.bundle"
+out="${TRC_BUNDLE_OUT:-$here/.bundle}"
 budget=$((64 * 1024 * 1024))
-python_exe=/usr/bin/python3.11
-python_version=3.11
+. "$here/Module/debian-release.sh"
+trc_release_or_die
+python_version="$trc_python"
+python_exe="/usr/bin/python$python_version"
+vtk_version="$trc_vtk"
 vtkmodules_dir=/usr/lib/python3/dist-packages/vtkmodules
 
 die() {
@@ -117,7 +124,7 @@ if [ "$with_python" = 1 ]; then
   wanted=""
   for lib in $(closure "${cxx_elfs[@]}" | awk '{print $1}'); do
     case "$lib" in
-      libvtk*-9.1.so*) wanted+=" $(echo "$lib" | sed -E 's/^lib(vtk[A-Za-z0-9]+)-9\.1\.so.*/\1/')" ;;
+      libvtk*-"$vtk_version".so*) wanted+=" $(echo "$lib" | sed -E 's/^lib(vtk[A-Za-z0-9]+)-[0-9]+\.[0-9]+\.so.*/\1/')" ;;
     esac
   done
   # (each module's tests are in its folder's Testing/Python; the package's in Testing/Python)
@@ -173,7 +180,9 @@ max_version() { # highest <prefix>N.N.N symbol version that the files need
   echo "TRC_GLIBCXX_NEEDED=$(max_version GLIBCXX_)"
   echo "TRC_PYTHON=$with_python"
   echo "TRC_PYTHON_VERSION=$python_version"
-  echo "TRC_GIT_COMMIT=$(git -C "$here" rev-parse HEAD 2>/dev/null || echo unknown)"
+  echo "TRC_DEBIAN=$trc_debian"
+  echo "TRC_VTK=$vtk_version"
+  echo "TRC_GIT_COMMIT=${TRC_GIT_COMMIT:-$(git -C "$here" rev-parse HEAD 2>/dev/null || echo unknown)}"
   echo "TRC_CREATED=$(date -u +%Y-%m-%dT%H:%M:%SZ)"
 } > "$root/MANIFEST"
 

@@ -1,19 +1,17 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages that building, testing and running TiledRayCast need, if any
-# is missing. Needs root (or sudo) only when something must be installed.
+# Installs the Debian packages that building, testing and running TiledRayCast need, if any is
+# missing: Debian 12's or Debian 13's set (Module/debian-release.sh; any other system is refused
+# with a message). Needs root (or sudo) only when something must be installed.
+#   Module/install-deps.sh --list   prints the packages for this release, installs nothing
 set -euo pipefail
-
-packages=(
-  cmake ninja-build g++ make           # build tools
-  libvtk9-dev vtk9 python3-vtk9        # VTK 9.1: headers, wrapping tools, Python modules
-  libglew-dev libegl-dev libgl-dev     # headers of the GL libraries VTK links (EGL for headless)
-  libegl-mesa0 libgl1-mesa-dri         # Mesa's llvmpipe for machines without a GPU
-  libosmesa6-dev                       # OSMesa: only docs/headless-osmesa (why it is not used)
-  xvfb xauth                           # X server for the tests that use VTK's X window
-  tetgen libtet1.5-dev                 # TetGen for the optional meshing module and the ladder
-  xz-utils                             # Module/bundle-gpu.sh compresses the GPU bundle
-  openmpi-bin                          # mpirun: ParaView's ranks in the MPI tests (ParaView/Testing)
-)
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+. "$here/Module/debian-release.sh"
+trc_release_or_die
+packages=("${trc_packages[@]}")
+if [ "${1:-}" = --list ]; then
+  echo "${packages[*]}"
+  exit 0
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,7 +24,7 @@ if [ ${#missing[@]} -eq 0 ]; then
   exit 0
 fi
 
-echo "TiledRayCast: installing missing Debian packages: ${missing[*]}"
+echo "TiledRayCast: installing missing Debian $trc_debian packages: ${missing[*]}"
 sudo=""
 if [ "$(id -u)" -ne 0 ]; then
   if command -v sudo >/dev/null 2>&1; then

@@ -1,4 +1,4 @@
-"""ParaView 5.11's GUI with the TiledRayCast plugin, as a user meets it, against the exact reference.
+"""ParaView's GUI (5.11 or 5.13) with the TiledRayCast plugin, as a user meets it, against the exact reference.
 
 Runs under Debian's /usr/bin/python3 and starts `paraview` from the private ParaView root under
 xvfb-run (Xvfb with -noreset), with a fresh settings folder (no welcome dialog), gui_setup.py as its
@@ -79,7 +79,13 @@ def run_paraview(options, output):
     config = os.path.join(output, "config")
     os.makedirs(os.path.join(config, "ParaView"))
     # A first start shows a modal welcome dialog, which would block the event script.
-    with open(os.path.join(config, "ParaView", "ParaView5.11.0.ini"), "w") as f:
+    # The settings file is named after ParaView's version, which the private root records
+    # (ParaView/fetch-paraview.sh writes the package's, e.g. 5.13.2+dfsg-3).
+    with open(os.path.join(options.root, ".complete")) as f:
+        version = re.match(r"(\d+\.\d+\.\d+)", f.read().strip())
+    if not version:
+        raise SystemExit("cannot read ParaView's version from %s/.complete" % options.root)
+    with open(os.path.join(config, "ParaView", "ParaView%s.ini" % version.group(1)), "w") as f:
         f.write("[General]\nGeneralSettings.ShowWelcomeDialog=false\n")
     events = os.path.join(output, "events.xml")
     with open(events, "w") as f:

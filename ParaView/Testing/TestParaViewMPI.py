@@ -33,6 +33,7 @@ missing.
 import argparse
 import json
 import os
+import shlex
 import shutil
 import signal
 import socket
@@ -42,7 +43,10 @@ import threading
 import time
 
 from vtkmodules.vtkCommonDataModel import vtkPlane
-from vtkmodules.vtkFiltersExtraction import vtkExtractCells
+try:
+    from vtkmodules.vtkFiltersCore import vtkExtractCells  # VTK 9.3 (Debian 13) moved it here
+except ImportError:
+    from vtkmodules.vtkFiltersExtraction import vtkExtractCells  # VTK 9.1 (Debian 12)
 from vtkmodules.vtkFiltersGeneral import vtkTableBasedClipDataSet
 from vtkmodules.vtkIOParallelXML import vtkXMLPUnstructuredGridWriter
 from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
@@ -89,18 +93,23 @@ class Runner:
         output = os.path.join(self.options.temp, name)
         arguments = ["--plugin", self.options.plugin, "--mesh", mesh, "--mapper", mapper,
                      "--size", str(self.options.size), "--output", output] + list(extra)
-        # Open MPI's MPMD syntax, one rank per context, so that a rank may differ:
-        # per_rank = {rank: (environment, pvbatch options)}.
-        command = self.mpirun()
+        # A rank may differ: per_rank = {rank: (environment, pvbatch options)}. Each rank runs a
+        # shell that picks its own command by its rank in Open MPI's environment, rather than
+        # Open MPI's MPMD syntax (one context per rank, "-np 1 a : -np 1 b"), on which Debian
+        # 13's mpirun (Open MPI 5.0.7 with the system's PMIx) crashes before starting anything
+        # (open-mpi/ompi#13303).
         per_rank = per_rank or {}
+        cases = []
         for rank in range(ranks):
             environment, options = per_rank.get(rank, ({}, []))
-            if rank > 0:
-                command.append(":")
-            command += ["-np", "1"]
+            words = ["exec"]
             if environment:
-                command += ["env"] + ["%s=%s" % item for item in environment.items()]
-            command += [self.pvbatch] + list(options) + [self.script] + arguments
+                words += ["env"] + ["%s=%s" % item for item in environment.items()]
+            words += [self.pvbatch] + list(options) + [self.script] + arguments
+            cases.append("%d) %s ;;" % (rank, " ".join(shlex.quote(w) for w in words)))
+        cases.append('*) echo "no command for rank $OMPI_COMM_WORLD_RANK" >&2; exit 1 ;;')
+        choose = 'case "$OMPI_COMM_WORLD_RANK" in %s esac' % " ".join(cases)
+        command = self.mpirun() + ["-np", str(ranks), "/bin/sh", "-c", choose]
         start = time.perf_counter()
         process = subprocess.Popen(command, env=self.env, stdout=subprocess.PIPE,
                                    stderr=subprocess.STDOUT, text=True, start_new_session=True)
