@@ -16,7 +16,12 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TRC_BUILD_DIR:-$here/build}"
 root="${TRC_PARAVIEW_ROOT:-$build/paraview/root}"
-plugin="${TRC_PV_PLUGIN:-$build/paraview/plugin/lib/paraview-5.11/plugins/TiledRayCast/TiledRayCast.so}"
+if [ -z "${TRC_PV_PLUGIN:-}" ]; then
+  # shellcheck source=../Module/debian-release.sh
+  . "$here/Module/debian-release.sh"
+  trc_release_or_die
+fi
+plugin="${TRC_PV_PLUGIN:-$build/paraview/plugin/lib/paraview-${trc_paraview:-}/plugins/TiledRayCast/TiledRayCast.so}"
 size=1024
 frames=10
 ranks_list="1"

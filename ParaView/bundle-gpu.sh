@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Packs what ParaView's ranks need on a GPU machine that has NVIDIA's driver but no Debian
-# packages and no X server: pvbatch and pvserver from the private ParaView 5.11 root, every
+# packages and no X server: pvbatch and pvserver from the private ParaView root (5.11 on Debian 12), every
 # library they and the plugin load (the ldd closure, glibc and the GPU driver left out), ParaView's
-# Python packages and the Python 3.11 standard library pvbatch embeds, Open MPI's mpirun with its
+# Python packages and the standard library of the Python pvbatch embeds (3.11), Open MPI's mpirun with its
 # components, and the plugin (Release, `make paraview`). The whole is far over what one device
 # call carries (64 MiB with the repository), so its .tar.xz is cut into byte parts under
 # .bundle/paraview-gpu/ (part-00.xz, ...), carried by successive calls to a machine that stays
@@ -14,7 +14,11 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${TRC_BUILD_DIR:-$here/build}"
 pvroot="${TRC_PARAVIEW_ROOT:-$build/paraview/root}"
-plugin_dir="$build/paraview/plugin/lib/paraview-5.11/plugins/TiledRayCast"
+# shellcheck source=../Module/debian-release.sh
+. "$here/Module/debian-release.sh"
+trc_release_or_die
+py="python$trc_python"
+plugin_dir="$build/paraview/plugin/lib/paraview-$trc_paraview/plugins/TiledRayCast"
 out="$here/.bundle/paraview-gpu"
 part_size=$((${1:-38} * 1024 * 1024))
 arch=x86_64-linux-gnu
@@ -25,7 +29,9 @@ die() {
 }
 [ -x "$pvroot/usr/bin/pvbatch" ] || die "no private ParaView root in $pvroot: run make paraview"
 [ -f "$plugin_dir/TiledRayCast.so" ] || die "no Release plugin in $plugin_dir: run make paraview"
-command -v orterun > /dev/null || die "no Open MPI (Debian's openmpi-bin)"
+command -v orterun > /dev/null ||
+  die "no orterun: Debian 12's Open MPI 4 is what this bundle relocates (Debian 13's Open MPI 5 \
+starts its ranks through PRRTE, not packed here yet); make the ParaView GPU bundle on Debian 12"
 
 stage="$(mktemp -d)"
 trap 'rm -rf "$stage"' EXIT
@@ -43,12 +49,12 @@ cp -a "$plugin_dir/." "$root/plugin/"
 tar -C "$pvroot/usr/lib/python3/dist-packages" -cf - --exclude='__pycache__' --exclude='tests' \
   paraview vtkmodules vtk.py | tar -C "$root/python/dist-packages" -xf -
 # The standard library of the Python pvbatch embeds (Debian's 3.11), less what ranks never use.
-tar -C /usr/lib -cf - --exclude='python3.11/test' --exclude='python3.11/idlelib' \
-  --exclude='python3.11/tkinter' --exclude='python3.11/turtledemo' \
-  --exclude='python3.11/ensurepip' --exclude='python3.11/lib2to3' \
-  --exclude='python3.11/pydoc_data' --exclude='python3.11/config-*' \
-  --exclude='python3.11/sitecustomize.py' --exclude='__pycache__' --exclude='python3.11/dist-packages' \
-  python3.11 | tar -C "$root/python/lib" -xf -
+tar -C /usr/lib -cf - --exclude="$py/test" --exclude="$py/idlelib" \
+  --exclude="$py/tkinter" --exclude="$py/turtledemo" \
+  --exclude="$py/ensurepip" --exclude="$py/lib2to3" \
+  --exclude="$py/pydoc_data" --exclude="$py/config-*" \
+  --exclude="$py/sitecustomize.py" --exclude='__pycache__' --exclude="$py/dist-packages" \
+  "$py" | tar -C "$root/python/lib" -xf -
 
 # --- Open MPI, relocated by OPAL_PREFIX (run-on-gpu.sh) ------------------------------------------
 mkdir -p "$root/openmpi/lib/$arch" "$root/openmpi/share" "$root/openmpi/etc"
