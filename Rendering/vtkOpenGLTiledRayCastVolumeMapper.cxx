@@ -251,33 +251,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::MovePointsOnGPU(
 }
 
 //------------------------------------------------------------------------------
-// The mesh on the CPU with the points the GPU holds (after MovePointsOnGPU, its last build's):
-// for what samples it on the CPU (the automatic integration's choice).
-vtkTetMesh* vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::CatchUpMesh(
-  vtkDataObject* dataObject, vtkVolumeProperty* property)
-{
-  if (this->MovedPoints)
-  {
-    this->MovedPoints = nullptr;
-    vtkTiledRayCastStatistics* stats = this->Self->Statistics;
-    const double gpuTime = stats->GetMeshBuildTime();
-    std::string error;
-    if (!this->Reported(this->Mesh.Update(dataObject, property, this->Context.MaxTextureSize,
-                          this->Context.MaxTextureBufferSize, this->MemoryBudget, error),
-          error) ||
-      !this->UploadMesh(this->Context.Window))
-    {
-      return nullptr;
-    }
-    // Both happened this frame: the points moved on the GPU, then the CPU caught up.
-    stats->SetMeshRebuild(
-      stats->GetMeshRebuild() | vtkTiledRayCastStatistics::MeshRebuildPointsOnGPU);
-    stats->SetMeshBuildTime(stats->GetMeshBuildTime() + gpuTime);
-  }
-  return this->Mesh.GetMesh();
-}
-
-//------------------------------------------------------------------------------
 bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRenderWindow* window)
 {
   vtkIdType uploaded = 0;
@@ -308,11 +281,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UpdateTransferFunction(
   frame.MaxTextureSize = this->Context.MaxTextureSize;
   frame.Max3DTextureSize = this->Context.Max3DTextureSize;
   frame.WaitForChoice = this->Self->SynchronousStatistics;
-  if (this->MovedPoints)
-  {
-    vtkDataObject* input = this->FrameInput;
-    frame.CurrentMesh = [this, input, property]() { return this->CatchUpMesh(input, property); };
-  }
+  frame.MovedPoints = this->MovedPoints ? this->MovedPoints->GetData() : nullptr;
   std::string error;
   return this->Reported(this->Integration.Update(frame, property, error), error);
 }
@@ -539,7 +508,6 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::PrepareFrame(vtkRenderer* 
   // CPU work: only what changed.
   vtkOpenGLTiledRayCastVolumeMapper* self = this->Self;
   this->FrameVolume = vol;
-  this->FrameInput = input;
   const int width = this->Viewport[2];
   const int height = this->Viewport[3];
   if (!this->UpdateMesh(input, property))

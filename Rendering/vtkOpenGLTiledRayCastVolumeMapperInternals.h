@@ -105,9 +105,9 @@ public:
   vtkTiledRayCastMeshTextures MeshTextures;
   vtkTiledRayCastMemoryBudget MemoryBudget; // what the mesh may take on the GPU
   // A deforming mesh's points moved on the GPU, and the input points last moved there (not
-  // held; with their time): the CPU mesh holds older ones until Mesh.Update() catches up.
+  // held; with their time): the CPU mesh keeps older ones until a build on the CPU.
   vtkTiledRayCastPointMotion PointMotion;
-  const void* MovedPoints = nullptr;
+  vtkPoints* MovedPoints = nullptr;
   vtkMTimeType MovedPointsTime = 0;
   bool WarnedPointMotion = false;
   // The faces rays enter by, and which tets they may cross (empty-space skipping).
@@ -165,8 +165,7 @@ public:
 
   // This frame.
   vtkTiledRayCastFrameGeometry Geometry;
-  vtkVolume* FrameVolume = nullptr;    // the volume of the frame being drawn (not held)
-  vtkDataObject* FrameInput = nullptr; // its input (not held)
+  vtkVolume* FrameVolume = nullptr; // the volume of the frame being drawn (not held)
   vtkTiledRayCastLighting Lighting;
   vtkTiledRayCastGradientOpacityNodes GradientOpacity;
   int Viewport[4] = { 0, 0, 0, 0 };
@@ -197,7 +196,6 @@ public:
   bool CheckContext(vtkOpenGLRenderWindow* window) { return this->Context.Check(window); }
   bool UpdateMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool MovePointsOnGPU(vtkDataObject* input, vtkVolumeProperty* property);
-  vtkTetMesh* CatchUpMesh(vtkDataObject* input, vtkVolumeProperty* property);
   bool UploadMesh(vtkOpenGLRenderWindow* window);
   bool UpdateTransferFunction(vtkVolumeProperty* property, vtkOpenGLRenderWindow* window);
   bool UpdateVisibleMesh(vtkOpenGLRenderWindow* window);

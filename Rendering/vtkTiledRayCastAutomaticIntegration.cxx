@@ -112,8 +112,8 @@ void vtkTiledRayCastAutomaticIntegration::ReapAbandoned(bool wait)
 }
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastAutomaticIntegration::Start(
-  vtkTetMesh* mesh, double objectToWorldNorm, vtkVolumeProperty* property, const Settings& settings)
+void vtkTiledRayCastAutomaticIntegration::Start(vtkTetMesh* mesh, vtkDataArray* movedPoints,
+  double objectToWorldNorm, vtkVolumeProperty* property, const Settings& settings)
 {
   if (this->Current)
   {
@@ -122,7 +122,7 @@ void vtkTiledRayCastAutomaticIntegration::Start(
   }
   this->ReapAbandoned(false);
   auto job = std::make_shared<Job>();
-  job->Predictor.SampleSegments(mesh, objectToWorldNorm);
+  job->Predictor.SampleSegments(mesh, movedPoints, objectToWorldNorm);
   job->Property->DeepCopy(property); // its functions too
   job->Inputs = settings;
   this->Current = job;

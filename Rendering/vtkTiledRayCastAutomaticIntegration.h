@@ -35,6 +35,7 @@
 #include <memory> // For std::shared_ptr
 #include <vector> // For std::vector
 
+class vtkDataArray;
 class vtkTetMesh;
 class vtkTiledRayCastPreIntegrationTable;
 class vtkVolumeProperty;
@@ -91,11 +92,12 @@ public:
   };
 
   /**
-   * Start choosing for `mesh` (its segments are sampled here, on the calling thread),
+   * Start choosing for `mesh` (its segments are sampled here, on the calling thread, at
+   * `movedPoints` where not null: see vtkTiledRayCastIntegrationChoice::SampleSegments),
    * `property` (copied) and `settings`; a choice in progress is abandoned.
    */
-  void Start(vtkTetMesh* mesh, double objectToWorldNorm, vtkVolumeProperty* property,
-    const Settings& settings);
+  void Start(vtkTetMesh* mesh, vtkDataArray* movedPoints, double objectToWorldNorm,
+    vtkVolumeProperty* property, const Settings& settings);
 
   /**
    * The choice of the latest Start(), once made: true and `choice` set, once. With `wait`,

@@ -201,15 +201,10 @@ void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolume
       static_cast<double>(self->GetPreIntegrationTableLengthSize()) });
   if (key != this->ChoiceKey)
   {
-    // The choice samples segments of the mesh: of its current points, not those of its last
+    // The choice samples segments of the mesh at its current points, not those of its last
     // build on the CPU.
-    vtkTetMesh* current = frame.CurrentMesh ? frame.CurrentMesh() : mesh;
-    if (!current)
-    {
-      return;
-    }
     this->ChoiceKey = key;
-    this->Automatic.Start(current, frame.ObjectToWorldNorm, property, settings);
+    this->Automatic.Start(mesh, frame.MovedPoints, frame.ObjectToWorldNorm, property, settings);
     // Exact until the choice is made: never a table that was not checked against the budget.
     this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
     this->PredictedError = 0.0;

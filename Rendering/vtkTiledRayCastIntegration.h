@@ -33,10 +33,10 @@
 #include "vtkTiledRayCastVolumeMapper.h"         // For the integration modes
 #include "vtkType.h"                             // For vtkIdType
 
-#include <functional> // For std::function
-#include <string>     // For std::string
-#include <vector>     // For std::vector
+#include <string> // For std::string
+#include <vector> // For std::vector
 
+class vtkDataArray;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTetMesh;
@@ -68,10 +68,11 @@ public:
     // Whether a choice of the automatic mode in progress is waited for (SynchronousStatistics);
     // the first choice always is.
     bool WaitForChoice = false;
-    // The mesh with its current points, where Mesh may hold older ones (a deforming mesh's
-    // points moved on the GPU, vtkTiledRayCastPointMotion): called only when a new automatic
-    // choice starts, which samples the mesh on the CPU; null when Mesh is current.
-    std::function<vtkTetMesh*()> CurrentMesh;
+    // The input's coordinates where they moved on the GPU since Mesh was built
+    // (vtkTiledRayCastPointMotion: Mesh holds older points; its point order maps to these), or
+    // null: a new automatic choice samples its segments' points there, a few thousand reads,
+    // instead of the CPU rebuilding every point.
+    vtkDataArray* MovedPoints = nullptr;
   };
 
   /**

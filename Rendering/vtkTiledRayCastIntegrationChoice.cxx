@@ -10,6 +10,7 @@
 =========================================================================*/
 #include "vtkTiledRayCastIntegrationChoice.h"
 
+#include "vtkDataArray.h"
 #include "vtkMath.h"
 #include "vtkSMPTools.h"
 #include "vtkTetMesh.h"
@@ -160,15 +161,20 @@ vtkTiledRayCastIntegrationChoice::vtkTiledRayCastIntegrationChoice() = default;
 vtkTiledRayCastIntegrationChoice::~vtkTiledRayCastIntegrationChoice() = default;
 
 //------------------------------------------------------------------------------
-void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double norm)
+void vtkTiledRayCastIntegrationChoice::SampleSegments(
+  vtkTetMesh* mesh, vtkDataArray* movedPoints, double norm)
 {
+  const vtkMTimeType movedTime = movedPoints ? movedPoints->GetMTime() : 0;
   if (mesh == this->SampledMesh && mesh->GetMTime() == this->SampledMeshTime &&
+    movedPoints == this->SampledPoints && movedTime == this->SampledPointsTime &&
     norm == this->SampledNorm)
   {
     return;
   }
   this->SampledMesh = mesh;
   this->SampledMeshTime = mesh->GetMTime();
+  this->SampledPoints = movedPoints;
+  this->SampledPointsTime = movedTime;
   this->SampledNorm = norm;
   this->Segments.clear();
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
@@ -176,6 +182,20 @@ void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double n
   this->SegmentsPerRay =
     std::max(1, static_cast<int>(std::ceil(1.5 * std::cbrt(static_cast<double>(numTets)))));
   const double* points = mesh->GetPoints();
+  const uint32_t* inputIds = mesh->GetPointInputIds();
+  // A point of the mesh where it is now: the mesh's copy, or the input's moved coordinates
+  // (read in double, as a build would copy them).
+  auto pointOf = [&](uint32_t id, double p[3])
+  {
+    if (movedPoints)
+    {
+      movedPoints->GetTuple(inputIds ? inputIds[id] : id, p);
+    }
+    else
+    {
+      std::copy(points + 3 * id, points + 3 * id + 3, p);
+    }
+  };
   const uint32_t* tetPoints = mesh->GetTetPoints();
   const double* pointScalars = mesh->GetPointScalars();
   const double* cellScalars = mesh->GetCellScalars();
@@ -209,10 +229,7 @@ void vtkTiledRayCastIntegrationChoice::SampleSegments(vtkTetMesh* mesh, double n
     for (int k = 0; k < 4; ++k)
     {
       const uint32_t id = tetPoints[4 * t + k];
-      for (int a = 0; a < 3; ++a)
-      {
-        p[k][a] = points[3 * id + a];
-      }
+      pointOf(id, p[k]);
       s[k] = cellScalars ? cellScalars[t] : pointScalars[id];
       w[k] /= sum;
     }

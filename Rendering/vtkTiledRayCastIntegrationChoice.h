@@ -42,6 +42,7 @@
 
 #include <vector> // For std::vector
 
+class vtkDataArray;
 class vtkTetMesh;
 class vtkTetRayIntegrator;
 class vtkTiledRayCastPreIntegrationTable;
@@ -54,10 +55,13 @@ public:
   ~vtkTiledRayCastIntegrationChoice();
 
   /**
-   * Draw the mesh's segments (again only when the mesh or the norm changed). Lengths are in
-   * world units: object lengths times `objectToWorldNorm`.
+   * Draw the mesh's segments (again only when the mesh, the points or the norm changed).
+   * Lengths are in world units: object lengths times `objectToWorldNorm`. Where `movedPoints`
+   * is not null, the points are read there instead of the mesh's: the input's coordinates
+   * after the mesh was built, the topology and the tets' flags unchanged (the mesh's point
+   * order maps its points to them).
    */
-  void SampleSegments(vtkTetMesh* mesh, double objectToWorldNorm);
+  void SampleSegments(vtkTetMesh* mesh, vtkDataArray* movedPoints, double objectToWorldNorm);
 
   /**
    * The exact integrator of `property` (call when the property's functions changed). False
@@ -90,6 +94,8 @@ private:
   int SegmentsPerRay = 1;
   vtkMTimeType SampledMeshTime = 0;
   vtkTetMesh* SampledMesh = nullptr;
+  vtkDataArray* SampledPoints = nullptr;
+  vtkMTimeType SampledPointsTime = 0;
   double SampledNorm = 0;
   vtkNew<vtkTetRayIntegrator> Exact;
   double WorstSegmentError = 0;
