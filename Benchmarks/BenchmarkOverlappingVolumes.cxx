@@ -164,13 +164,13 @@ int main(int argc, char* argv[])
                 << size << "^2: " << r.Grouped << " in one traversal, frame " << r.WallMs
                 << " ms wall, " << r.GpuMs << " ms GPU (first frame " << r.FirstMs << " ms), "
                 << r.Rays << " rays, " << r.MixedRays << " through a mixture, " << r.StepsPerRay
-                << " tets per ray\n";
+                << " tets per ray" << std::endl;
       if (out)
       {
         out << mesh << "," << grid->GetNumberOfCells() << "," << copies << "," << shift << ","
             << r.Grouped << "," << size << "," << frames << "," << r.FirstMs << "," << r.WallMs
             << "," << r.GpuMs << "," << r.Rays << "," << r.MixedRays << "," << r.StepsPerRay
-            << "\n";
+            << std::endl; // kept if a later count runs out of its time limit
       }
     }
   }
