@@ -52,6 +52,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->NumberOfIncompleteRays = 0;
   this->NumberOfGroupedVolumes = 0;
   this->NumberOfMixedRays = 0;
+  this->GroupCodeShared = false;
   this->NumberOfVolumeSetsInDepthOrder = 0;
   this->NumberOfShaderCompositions = 0;
   this->NumberOfSteps = 0;
@@ -115,7 +116,8 @@ std::string vtkTiledRayCastStatistics::GetSummary() const
     if (this->NumberOfGroupedVolumes > 1)
     {
       text << ", " << this->NumberOfGroupedVolumes << " overlapping volumes in one traversal ("
-           << this->NumberOfMixedRays << " rays through their mixture)";
+           << this->NumberOfMixedRays << " rays through their mixture"
+           << (this->GroupCodeShared ? "; one copy of their code)" : ")");
     }
     text << ", " << this->NumberOfLayers << " layers, " << this->NumberOfTiles << " tiles ("
          << this->NumberOfTilesSkipped << " empty)";
@@ -182,6 +184,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfIncompleteRays: " << this->NumberOfIncompleteRays << "\n";
   os << indent << "NumberOfGroupedVolumes: " << this->NumberOfGroupedVolumes << "\n";
   os << indent << "NumberOfMixedRays: " << this->NumberOfMixedRays << "\n";
+  os << indent << "GroupCodeShared: " << (this->GroupCodeShared ? "On" : "Off") << "\n";
   os << indent << "NumberOfVolumeSetsInDepthOrder: " << this->NumberOfVolumeSetsInDepthOrder
      << "\n";
   os << indent << "NumberOfShaderCompositions: " << this->NumberOfShaderCompositions << "\n";

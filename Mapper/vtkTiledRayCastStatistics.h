@@ -189,6 +189,19 @@ public:
   vtkGetMacro(NumberOfMixedRays, vtkIdType);
   ///@}
 
+  ///@{
+  /**
+   * Whether this frame's traversal of overlapping volumes held one copy of the volumes' code for
+   * all of them (four or more volumes of the same layout, integration and lighting: a warp whose
+   * rays move different volumes runs one event body) rather than one copy per volume
+   * (docs/mapper.md, "Overlapping volumes"). Only in the statistics of the mapper that drew the
+   * group; false for a volume drawn alone.
+   */
+  vtkSetMacro(GroupCodeShared, bool);
+  vtkGetMacro(GroupCodeShared, bool);
+  vtkBooleanMacro(GroupCodeShared, bool);
+  ///@}
+
   /**
    * Volumes apart (docs/mapper.md, "Volumes apart"): where a renderer holds several sets of this
    * module's volumes (a group of overlapping volumes, or a volume alone), the first of them that
@@ -402,6 +415,7 @@ protected:
   vtkIdType NumberOfIncompleteRays = 0;
   int NumberOfGroupedVolumes = 0;
   vtkIdType NumberOfMixedRays = 0;
+  bool GroupCodeShared = false;
   int NumberOfVolumeSetsInDepthOrder = 0;
   int NumberOfShaderCompositions = 0;
   vtkIdType NumberOfSteps = 0;

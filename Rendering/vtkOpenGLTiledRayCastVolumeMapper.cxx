@@ -767,6 +767,7 @@ void vtkOpenGLTiledRayCastVolumeMapper::FinishRender(vtkIdType renderTargetBytes
                                                  : stats->GetNumberOfDepthPeelingDraws() + 1);
   stats->SetImageSize(impl->ImageSize);
   stats->SetNumberOfGroupedVolumes(impl->GroupSize);
+  stats->SetGroupCodeShared(impl->GroupSize > 1 && impl->Compute.GetGroupCodeShared());
   stats->SetImageSampleDistance(impl->FrameSampleDistance);
   // The layout's textures, the faces rays enter by and the visible bits.
   const vtkIdType meshBytes =

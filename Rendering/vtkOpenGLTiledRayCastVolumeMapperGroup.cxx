@@ -207,6 +207,8 @@ void vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::FinishGroupFrame(int volum
   this->GroupSize = volumes;
   this->Self->Statistics->SetPipeline("Compute");
   this->Self->FinishRender(0);
+  // Which code the traversal held is the drawing mapper's to say.
+  this->Self->Statistics->SetGroupCodeShared(false);
 }
 
 //------------------------------------------------------------------------------

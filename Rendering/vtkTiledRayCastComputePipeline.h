@@ -124,6 +124,11 @@ public:
   bool PrepareGroupStage(int stage, std::string& error);
 
   /**
+   * Whether the group's programs hold one copy of the volumes' code for all of them.
+   */
+  bool GetGroupCodeShared() const { return this->Group.GetSharedCode(); }
+
+  /**
    * Whether the group's programs are to be built (UpdateGroupPrograms) for volumes of these
    * inputs, in the group's order: false when they were last built for them, so that a steady
    * frame composes and compares no GLSL.

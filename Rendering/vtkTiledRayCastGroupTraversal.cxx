@@ -13,6 +13,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTiledRayCastComputeShader.h"
 #include "vtkTiledRayCastMemberUniforms.h"
+#include "vtkTiledRayCastSharedMemberCode.h"
 
 #include "vtkTiledRayCastEntryList.h"
 #include "vtkTiledRayCastGroupMember.h"
@@ -169,7 +170,7 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
     return false;
   }
   // Each volume's code: what its own traversal holds, then what the group needs of it.
-  std::string volumes;
+  std::vector<std::string> codes;
   for (int k = 0; k < count; ++k)
   {
     std::string code;
@@ -186,10 +187,34 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
     }
     code += vtkTiledRayCastWalk;
     code += vtkTiledRayCastGroupMember;
-    if (k > 0)
-    {
-      code = WithoutSharedDeclarations(code);
-    }
+    codes.push_back(code);
+  }
+  // Volumes of the same code share one copy of it where it can be shared; else each has its own,
+  // renamed.
+  std::string volumes;
+  this->Indexed.clear();
+  this->SharedCodeRefusal.clear();
+  this->SharedCode = std::all_of(
+    codes.begin(), codes.end(), [&codes](const std::string& c) { return c == codes[0]; });
+  if (count < SharedCodeMembers)
+  {
+    this->SharedCode = false;
+    this->SharedCodeRefusal = "fewer than " + std::to_string(SharedCodeMembers) + " volumes";
+  }
+  else if (!this->SharedCode)
+  {
+    this->SharedCodeRefusal = "the volumes' code differs";
+  }
+  else if (!vtkTiledRayCastSharedMemberCode::Make(codes[0], count,
+             std::vector<std::string>(std::begin(SharedUniforms), std::end(SharedUniforms)),
+             volumes, this->Indexed, this->SharedCodeRefusal))
+  {
+    this->SharedCode = false;
+    volumes.clear();
+  }
+  for (int k = 0; !this->SharedCode && k < count; ++k)
+  {
+    const std::string code = k > 0 ? WithoutSharedDeclarations(codes[k]) : codes[k];
     volumes += "// Volume " + std::to_string(k) + "\n" + Rename(code, "_v" + std::to_string(k));
   }
   std::string source = Expand(vtkTiledRayCastGroupTraversalCS, count);
@@ -250,8 +275,8 @@ bool vtkTiledRayCastGroupTraversal::Prepare(int stage, std::string& error)
       {
         shared.insert(shared.end(), psi.begin(), psi.end());
       }
-      built.Members[k]->Map(
-        program, "_v" + std::to_string(k), shared, k == 0 ? psi : std::vector<std::string>());
+      built.Members[k]->Map(program, "_v" + std::to_string(k), shared,
+        k == 0 ? psi : std::vector<std::string>(), this->Indexed, k);
     }
     else
     {
@@ -305,6 +330,8 @@ void vtkTiledRayCastGroupTraversal::ReleaseGraphicsResources()
     stage.Built = false;
   }
   this->NumberOfMembers = 0;
+  this->SharedCode = false;
+  this->Indexed.clear();
   this->Source.clear();
   this->Composition.Reset();
 }

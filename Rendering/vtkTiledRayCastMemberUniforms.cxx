@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkTiledRayCastMemberUniforms);
@@ -40,7 +41,8 @@ void vtkTiledRayCastMemberUniforms::Unmap()
 
 //------------------------------------------------------------------------------
 void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::string& suffix,
-  const std::vector<std::string>& shared, const std::vector<std::string>& plain)
+  const std::vector<std::string>& shared, const std::vector<std::string>& plain,
+  const std::vector<std::string>& indexed, int index)
 {
   this->Unmap();
   if (!program || program->GetHandle() == 0)
@@ -72,6 +74,18 @@ void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::st
     {
       continue;
     }
+    if (index >= 0 && std::find(indexed.begin(), indexed.end(), name) != indexed.end())
+    {
+      // This volume's element (for an array of arrays, its inner array's first element).
+      const std::string element = name + "[" + std::to_string(index) + "]";
+      GLint at = glGetUniformLocation(handle, element.c_str());
+      at = at >= 0 ? at : glGetUniformLocation(handle, (element + "[0]").c_str());
+      if (at >= 0 && this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
+      {
+        this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), static_cast<int>(at)));
+      }
+      continue;
+    }
     if (std::find(plain.begin(), plain.end(), name) != plain.end())
     {
       this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), static_cast<int>(location)));
@@ -91,6 +105,15 @@ void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::st
   }
   // The shared ones are known as absent, so that a setter does not look for them in the program
   // (where the group's own declaration of them would be found).
+  // Names this volume does not set stay unset: never looked up by their plain name, which in a
+  // program of shared code is the first volume's element.
+  for (const std::string& name : index >= 0 ? indexed : std::vector<std::string>())
+  {
+    if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
+    {
+      this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), -1));
+    }
+  }
   for (const std::string& name : shared)
   {
     if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())

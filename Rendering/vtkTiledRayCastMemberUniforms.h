@@ -45,10 +45,15 @@ public:
    * for those named in `plain` as they are (uniforms the volumes share, which this volume sets).
    * Plain names that have no suffixed uniform, and the `shared` ones (which the group sets
    * itself), are not set: the setters return false without a GL call.
+   *
+   * Where the volumes share one copy of their code (vtkTiledRayCastSharedMemberCode), the
+   * uniforms named in `indexed` are arrays with one element per volume: this volume's is
+   * element `index` (of an array of arrays, its inner array), and never another's.
    */
   void Map(vtkShaderProgram* program, const std::string& suffix,
     const std::vector<std::string>& shared = std::vector<std::string>(),
-    const std::vector<std::string>& plain = std::vector<std::string>());
+    const std::vector<std::string>& plain = std::vector<std::string>(),
+    const std::vector<std::string>& indexed = std::vector<std::string>(), int index = -1);
 
   /**
    * Forget the program (it is being rebuilt or released).

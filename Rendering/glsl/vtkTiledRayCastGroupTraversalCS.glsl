@@ -105,9 +105,79 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
   }
 }
 
+#ifdef TRC_GROUP_SHARED_CODE
+// One copy of the member code for every volume (vtkTiledRayCastSharedMemberCode): the names the
+// lines written per volume use stand for it, with trcMemberIndex set to the volume.
+//TRC::EachMember #define TrcMember_v@ TrcMember
+//TRC::EachMember #define trcMemberPart_v@ trcMemberPart
+//TRC::EachMember void trcMemberStart_v@(vec2 fragCoord, out TrcMember s) { trcMemberIndex = @; trcMemberStart(fragCoord, s); }
+#define TrcRay_v0 TrcRay
+#define in_lambdaNear_v0 in_lambdaNear[0]
+TrcRay trcPixelRay_v0(vec2 fragCoord)
+{
+  trcMemberIndex = 0;
+  return trcPixelRay(fragCoord);
+}
+float trcLambdaFromWindowDepth_v0(TrcRay ray, float depth)
+{
+  trcMemberIndex = 0;
+  return trcLambdaFromWindowDepth(ray, depth);
+}
+#endif
+
 //------------------------------------------------------------------------------
 // Each volume's state along this invocation's ray (vtkTiledRayCastGroupMember.glsl's TrcMember).
 //TRC::EachMember TrcMember_v@ trcVolume@;
+
+#ifdef TRC_GROUP_SHARED_CODE
+// Volume m's event, and volume `alone`'s walk: its state gathered from its global (a select per
+// volume, the state staying in registers), moved on by the one copy of the member code, which
+// reads the volume's own mesh and transfer function, and put back. A warp whose rays move
+// different volumes runs one body, not one per volume.
+bool trcGroupMemberEvent(int m, inout int steps, inout uint layers, inout bool startedNear,
+  inout bool stopped)
+{
+  TrcMember s = trcVolume0;
+//TRC::EachMember s = m == @ ? trcVolume@ : s;
+  trcMemberIndex = m;
+  bool moved = trcMemberEvent(s, in_maximumSteps, steps, layers, startedNear, stopped);
+//TRC::EachMember trcVolume@ = m == @ ? s : trcVolume@;
+  return moved;
+}
+
+bool trcGroupMemberWalk(int alone, float bound, inout float mu, inout vec4 color,
+  inout int steps, inout bool stopped, out bool inside)
+{
+  TrcMember s = trcVolume0;
+//TRC::EachMember s = alone == @ ? trcVolume@ : s;
+  trcMemberIndex = alone;
+  trcMemberAdvance(s, mu + s.lambdaNear);
+  bool goesOn = trcMemberWalk(s, bound, in_maximumSteps, color, steps, stopped);
+  inside = s.inside;
+  mu = max(mu, s.from - s.lambdaNear);
+//TRC::EachMember trcVolume@ = alone == @ ? s : trcVolume@;
+  return goesOn;
+}
+#else
+// Volume m's event, and volume `alone`'s walk, in the volume's own renamed code: a warp whose
+// rays move different volumes runs the body of each.
+bool trcGroupMemberEvent(int m, inout int steps, inout uint layers, inout bool startedNear,
+  inout bool stopped)
+{
+  bool moved = true;
+//TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
+  return moved;
+}
+
+bool trcGroupMemberWalk(int alone, float bound, inout float mu, inout vec4 color,
+  inout int steps, inout bool stopped, out bool inside)
+{
+  bool goesOn = true;
+  inside = true;
+//TRC::EachMember if (alone == @) { trcMemberAdvance_v@(trcVolume@, mu + trcVolume@.lambdaNear); goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+  return goesOn;
+}
+#endif
 
 // Volume k (inside, pending or done) in the search for the nearest event: the end of its span
 // (a node of its transfer function, or its tet's exit), or its entry, in mu; the lowest index first on a tie (the others follow at the same place).
@@ -150,10 +220,9 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
 {
   float bound = TRC_GROUP_FAR;
 //TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
-  bool goesOn = true;
-  bool inside = true;
+  bool inside;
   // It walks from where the ray is (its span may have begun before the last event).
-//TRC::EachMember if (alone == @) { trcMemberAdvance_v@(trcVolume@, mu + trcVolume@.lambdaNear); goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+  bool goesOn = trcGroupMemberWalk(alone, bound, mu, color, steps, stopped, inside);
   if (goesOn && !inside)
   {
     trcGroupNextEntry(head, alone);
@@ -249,8 +318,7 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
       mu = max(mu, event);
       // Volume m moves on: into its next span, the next tet, or the tet it enters; or it takes
       // its next entry (the one-volume traversal's peeling rules).
-      bool moved = true;
-//TRC::EachMember if (m == @) moved = trcMemberEvent_v@(trcVolume@, in_maximumSteps, steps, layers, startedNear, stopped);
+      bool moved = trcGroupMemberEvent(m, steps, layers, startedNear, stopped);
       if (!moved)
       {
         trcGroupNextEntry(head, m);

@@ -204,9 +204,17 @@ void PrintProjectedTetrahedra(Scene& scene, const std::string& label)
 
 // A scene of volumes that overlap: one traversal with rays through their mixture, within the
 // default bounds of the exact reference, silently; VTK's projected tetrahedra's error printed.
-bool CheckGroup(Scene& scene, const std::string& label)
+// `sharedCode` 1 or 0: whether the traversal must hold one copy of the volumes' code (four or
+// more volumes of the same code, vtkTiledRayCastSharedMemberCode) or one per volume.
+bool CheckGroup(Scene& scene, const std::string& label, int sharedCode = -1)
 {
   bool ok = CheckScene(scene, trctest::Bounds(), label);
+  if (sharedCode >= 0)
+  {
+    ok = Expect(scene.Mappers[0]->GetStatistics()->GetGroupCodeShared() == (sharedCode == 1),
+           label + (sharedCode == 1 ? ": one copy of the volumes' code" : ": a copy per volume")) &&
+      ok;
+  }
   const int volumes = static_cast<int>(scene.Volumes.size());
   for (auto& mapper : scene.Mappers)
   {
@@ -234,7 +242,7 @@ bool TestTwo(vtkUnstructuredGrid* torus, vtkUnstructuredGrid* spx)
   scene.Renderer->ResetCamera();
   scene.Renderer->GetActiveCamera()->Elevation(25);
   scene.Renderer->ResetCameraClippingRange();
-  bool ok = CheckGroup(scene, "two overlapping");
+  bool ok = CheckGroup(scene, "two overlapping", 0);
 
   // An opaque sphere in the overlap ends every volume's rays at its surface (the scene's depth,
   // which the volumes share).
@@ -402,7 +410,15 @@ bool TestMany(vtkUnstructuredGrid* spx)
 {
   Scene four(128);
   AddCopies(four, spx, 4);
-  bool ok = CheckGroup(four, "four overlapping");
+  bool ok = CheckGroup(four, "four overlapping", 1);
+  // One of four with cell scalars: their code differs, a copy per volume.
+  Scene mixed(128);
+  AddCopies(mixed, spx, 3);
+  mixed.AddPlaced(trctest::WithCellScalars(spx, false), OtherProperty(spx, 0.25), spx, 0.82,
+    { 0.18, -0.09, 0.06 }, { 45.0, 75.0, -30.0 });
+  mixed.Renderer->ResetCamera();
+  mixed.Renderer->ResetCameraClippingRange();
+  ok = CheckGroup(mixed, "four overlapping, one of cell scalars", 0) && ok;
 
   Scene eight(128);
   AddCopies(eight, spx, 8);
@@ -430,7 +446,7 @@ bool TestMany(vtkUnstructuredGrid* spx)
   {
     Scene fit(128);
     AddCopies(fit, spx, taken);
-    ok = CheckGroup(fit, std::to_string(taken) + " overlapping") && ok;
+    ok = CheckGroup(fit, std::to_string(taken) + " overlapping", 1) && ok;
   }
   return ok;
 }
