@@ -192,7 +192,7 @@ public:
   ///@{
   /**
    * Whether this frame's traversal of overlapping volumes held one copy of the volumes' code for
-   * all of them (four or more volumes of the same layout, integration and lighting: a warp whose
+   * all of them (three or more volumes of the same layout, integration and lighting: a warp whose
    * rays move different volumes runs one event body) rather than one copy per volume
    * (docs/mapper.md, "Overlapping volumes"). Only in the statistics of the mapper that drew the
    * group; false for a volume drawn alone.

@@ -115,18 +115,24 @@ void vtkTiledRayCastAutomaticIntegration::ReapAbandoned(bool wait)
 void vtkTiledRayCastAutomaticIntegration::Start(vtkTetMesh* mesh, vtkDataArray* movedPoints,
   double objectToWorldNorm, vtkVolumeProperty* property, const Settings& settings)
 {
-  if (this->Current)
-  {
-    this->Current->Abandoned = true;
-    this->Abandoned.emplace_back(std::move(this->Current), std::move(this->CurrentDone));
-  }
-  this->ReapAbandoned(false);
+  this->Abandon();
   auto job = std::make_shared<Job>();
   job->Predictor.SampleSegments(mesh, movedPoints, objectToWorldNorm);
   job->Property->DeepCopy(property); // its functions too
   job->Inputs = settings;
   this->Current = job;
   this->CurrentDone = std::async(std::launch::async, [job]() { job->Run(); });
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastAutomaticIntegration::Abandon()
+{
+  if (this->Current)
+  {
+    this->Current->Abandoned = true;
+    this->Abandoned.emplace_back(std::move(this->Current), std::move(this->CurrentDone));
+  }
+  this->ReapAbandoned(false);
 }
 
 //------------------------------------------------------------------------------

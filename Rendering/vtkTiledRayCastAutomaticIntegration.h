@@ -105,6 +105,12 @@ public:
    */
   bool Take(Choice& choice, bool wait);
 
+  /**
+   * Give up the choice of the latest Start(), if any: it stops at its next table, and Take()
+   * has nothing until the next Start().
+   */
+  void Abandon();
+
 private:
   vtkTiledRayCastAutomaticIntegration(const vtkTiledRayCastAutomaticIntegration&) = delete;
   void operator=(const vtkTiledRayCastAutomaticIntegration&) = delete;

@@ -51,11 +51,11 @@ public:
   // samplers (GetTextureUnits).
   static constexpr int MaximumMembers = 8;
   // The fewest volumes that share one copy of the member code (vtkTiledRayCastSharedMemberCode)
-  // where their code is the same. Measured on an H100 at 1024^2 (docs/benchmarks.md): four and
-  // seven copies of a mesh overlapping nearly everywhere drew 1.4 and 1.6-1.8 times faster with
-  // it, two copies 1.5 times slower (choosing the volume's uniforms and samplers cost more than
-  // the second event body).
-  static constexpr int SharedCodeMembers = 4;
+  // where their code is the same. Measured on an H100 at 1024^2 (docs/benchmarks.md): three
+  // copies of a mesh draw faster with it in five of six scenes (two meshes 1.7 times, overlapping
+  // nearly everywhere), four and seven copies 1.2-1.8 times; two copies are slower with it (up to
+  // 1.7 times: choosing the volume's uniforms and samplers costs more than a second event body).
+  static constexpr int SharedCodeMembers = 3;
   using Replacements = std::vector<std::pair<std::string, std::string>>;
 
   using Inputs = vtkTiledRayCastShaderComposition::Inputs;

@@ -201,13 +201,37 @@ void vtkTiledRayCastIntegration::ChooseIntegration(const Frame& frame, vtkVolume
       static_cast<double>(self->GetPreIntegrationTableLengthSize()) });
   if (key != this->ChoiceKey)
   {
-    // The choice samples segments of the mesh at its current points, not those of its last
-    // build on the CPU.
+    // A key that changes frame after frame (every point moving and the lengths with them, a
+    // transfer function being dragged) gets no choice until a frame keeps it: each choice would
+    // be abandoned by the next frame's, and their tables' builds, which take every core, would
+    // take them from the frames (on the H100, torus_1m's invert motion: 6.3 ms a frame back to
+    // back against its wave's 2.1).
+    const bool moving = this->ChoiceKeyJustChanged && this->ChoiceMade;
     this->ChoiceKey = key;
-    this->Automatic.Start(mesh, frame.MovedPoints, frame.ObjectToWorldNorm, property, settings);
+    this->ChoiceKeyJustChanged = true;
+    this->ChoiceDeferred = moving;
+    if (moving)
+    {
+      this->Automatic.Abandon();
+    }
+    else
+    {
+      // The choice samples segments of the mesh at its current points, not those of its last
+      // build on the CPU.
+      this->Automatic.Start(mesh, frame.MovedPoints, frame.ObjectToWorldNorm, property, settings);
+    }
     // Exact until the choice is made: never a table that was not checked against the budget.
     this->AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
     this->PredictedError = 0.0;
+  }
+  else
+  {
+    this->ChoiceKeyJustChanged = false;
+    if (this->ChoiceDeferred)
+    {
+      this->ChoiceDeferred = false;
+      this->Automatic.Start(mesh, frame.MovedPoints, frame.ObjectToWorldNorm, property, settings);
+    }
   }
   vtkTiledRayCastAutomaticIntegration::Choice choice;
   if (!this->Automatic.Take(choice, frame.WaitForChoice || !this->ChoiceMade))

@@ -141,6 +141,11 @@ private:
   int AutomaticMode = vtkTiledRayCastVolumeMapper::PARTIAL_PRE_INTEGRATION;
   double PredictedError = 0.0;
   std::vector<double> ChoiceKey;
+  // The key changed in the last frame this object chose for; and a choice waits for a frame that
+  // keeps its key (the key changed in consecutive frames: points moving, a transfer function
+  // dragged).
+  bool ChoiceKeyJustChanged = false;
+  bool ChoiceDeferred = false;
   vtkIdType Bytes = 0;
 };
 

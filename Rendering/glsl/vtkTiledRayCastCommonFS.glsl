@@ -157,7 +157,9 @@ float trcLambdaFromWindowDepth(TrcRay ray, float depth)
   return trcMuFromNDCDepth(ray, 2.0 * depth - 1.0) + in_lambdaNear;
 }
 
-TrcRay trcPixelRay(vec2 fragCoord)
+// The pixel's ray, unbounded: what the uniforms give it (the traversal of overlapping volumes
+// makes it again where it needs it rather than hold it for every volume).
+TrcRay trcPixelRayGeometry(vec2 fragCoord)
 {
   vec2 ndc = trcPixelNDC(fragCoord);
   TrcRay ray;
@@ -165,12 +167,20 @@ TrcRay trcPixelRay(vec2 fragCoord)
   ray.dir = in_rayDir0 + ndc.x * in_rayDirX + ndc.y * in_rayDirY;
   ray.wNear = in_wNear.x + ndc.x * in_wNear.y + ndc.y * in_wNear.z;
   ray.wFar = in_wFar.x + ndc.x * in_wFar.y + ndc.y * in_wFar.z;
+  ray.lambdaMin = -3.4e38;
+  ray.lambdaMax = 3.4e38;
+  ray.worldScale = length(in_objectToWorld * ray.dir);
+  return ray;
+}
+
+TrcRay trcPixelRay(vec2 fragCoord)
+{
+  TrcRay ray = trcPixelRayGeometry(fragCoord);
   float opaque = texelFetch(in_opaqueDepth, ivec2(fragCoord), 0).r;
   // Depth 1 is the far plane: the ray ends there when nothing opaque is in the way.
   ray.lambdaMax = trcLambdaFromWindowDepth(ray, opaque);
   // The kept half-spaces of the clipping planes cut the ray to one interval: a plane the ray
   // runs into the kept side of raises its start, one it runs out of lowers its end.
-  ray.lambdaMin = -3.4e38;
   for (int i = 0; i < in_numberOfClippingPlanes; ++i)
   {
     vec4 plane = in_clippingPlanes[i];
@@ -189,7 +199,6 @@ TrcRay trcPixelRay(vec2 fragCoord)
       ray.lambdaMax = -3.4e38; // parallel to the plane, on its removed side
     }
   }
-  ray.worldScale = length(in_objectToWorld * ray.dir);
   return ray;
 }
 

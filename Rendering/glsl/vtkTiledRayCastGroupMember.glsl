@@ -18,7 +18,7 @@ const uint TRC_MEMBER_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 
 // The volume on one ray: inside tet `tet` (entered through face `entry`, TRC_NO_FACE from the
 // near plane), at lambda `from`, where its current span begins; or waiting for its next entry at
-// entryLambda (pending), or neither (done). Lambda is the volume's own; mu = lambda - lambdaNear
+// entryLambda (pending), or neither (done). Lambda is the volume's own; mu = lambda - in_lambdaNear
 // is the same for every volume at the same point (the volume matrices are affine).
 //
 // A span is where the volume's attenuation and colour are linear along the ray: within its tet,
@@ -29,8 +29,8 @@ const uint TRC_MEMBER_NEAR_PLANE_KEY = 0xFFFFFFFEu;
 // with no read of the transfer function, and only the volume whose span ends moves on.
 struct TrcMember
 {
-  TrcRay ray;
-  float lambdaNear;
+  float lambdaMin; // where its ray begins and ends (trcMemberRay makes the rest again)
+  float lambdaMax;
   bool inside;
   bool pending;
   uint tet;
@@ -59,11 +59,10 @@ struct TrcMember
 // (a volume that never enters keeps these).
 void trcMemberStart(vec2 fragCoord, out TrcMember s)
 {
-  s.ray = trcPixelRay(fragCoord);
+  s.lambdaMax = trcPixelRay(fragCoord).lambdaMax;
   // A group takes no volume with clipping planes (vtkTiledRayCastVolumeGroup::Refusal): said
   // here, the walk's clipping test folds away and the state holds one word less.
-  s.ray.lambdaMin = -3.4e38;
-  s.lambdaNear = in_lambdaNear;
+  s.lambdaMin = -3.4e38;
   s.inside = false;
   s.pending = false;
   s.tet = 0u;
@@ -86,6 +85,24 @@ void trcMemberStart(vec2 fragCoord, out TrcMember s)
   s.entryNear = false;
   s.lastLambda = 0.0;
   s.lastKey = 0u;
+}
+
+// The volume's ray through the traversal's pixel (groupRayPixel), between its bounds: made again
+// from the volume's uniforms where it is needed (a dozen multiply-adds), so that each volume's
+// state holds two words of it instead of eleven.
+TrcRay trcMemberRay(TrcMember s)
+{
+  TrcRay ray = trcPixelRayGeometry(groupRayPixel);
+  ray.lambdaMin = s.lambdaMin;
+  ray.lambdaMax = s.lambdaMax;
+  return ray;
+}
+
+// The world length of a unit of lambda on the traversal's pixel's ray (the same for every volume
+// of the group: mu = lambda - lambdaNear is).
+float trcMemberWorldScale()
+{
+  return trcPixelRayGeometry(groupRayPixel).worldScale;
 }
 
 // trcFindNode(s), where `hint` is likely to be the answer (the node of the volume's last span: a
@@ -153,11 +170,12 @@ void trcMemberEnterTet(inout TrcMember s)
 {
   TrcTet t;
   trcLoadTet(s.tet, t);
-  float exitStep = trcExitStep(t, s.ray, s.from, s.entry, s.exitFace);
+  TrcRay ray = trcMemberRay(s);
+  float exitStep = trcExitStep(t, ray, s.from, s.entry, s.exitFace);
   s.exitAt = s.from + max(exitStep, 0.0);
   s.stalls = s.exitAt > s.from ? 0 : s.stalls + 1;
-  s.scalar = dot(t.field.xyz, s.ray.origin + s.from * s.ray.dir) + t.field.w;
-  s.scalarRate = dot(t.field.xyz, s.ray.dir);
+  s.scalar = dot(t.field.xyz, ray.origin + s.from * ray.dir) + t.field.w;
+  s.scalarRate = dot(t.field.xyz, ray.dir);
   trcMemberSpan(s);
 }
 
@@ -239,8 +257,8 @@ void trcMemberAdvance(inout TrcMember s, float lambda)
 bool trcMemberWalk(inout TrcMember s, float bound, int maximumSteps, inout vec4 color,
   inout int steps, inout bool stopped)
 {
-  TrcRay ray = s.ray;
-  float end = bound + s.lambdaNear;
+  TrcRay ray = trcMemberRay(s);
+  float end = bound + in_lambdaNear;
   bool clamped = end < ray.lambdaMax;
   if (clamped && !(end > s.from))
   {

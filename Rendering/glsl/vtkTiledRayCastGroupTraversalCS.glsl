@@ -29,6 +29,9 @@
 // by a volume index that varies per ray: NVIDIA's compiler keeps such arrays
 // in local memory, not in registers.
 //============================================================================
+// The pixel of this invocation's ray, which every volume's code reads (trcMemberRay): a global
+// named without the trc prefix, so that renaming each volume's code leaves it one for all.
+vec2 groupRayPixel;
 //TRC::Group::Members
 // The list's reading side too (trcNextEntry, in_peelEpsilon: each volume's entries only).
 #define TRC_ENTRY_TRAVERSAL
@@ -112,7 +115,8 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
 //TRC::EachMember #define trcMemberPart_v@ trcMemberPart
 //TRC::EachMember void trcMemberStart_v@(vec2 fragCoord, out TrcMember s) { trcMemberIndex = @; trcMemberStart(fragCoord, s); }
 #define TrcRay_v0 TrcRay
-#define in_lambdaNear_v0 in_lambdaNear[0]
+//TRC::EachMember #define in_lambdaNear_v@ in_lambdaNear[@]
+//TRC::EachMember float trcMemberWorldScale_v@() { trcMemberIndex = @; return trcMemberWorldScale(); }
 TrcRay trcPixelRay_v0(vec2 fragCoord)
 {
   trcMemberIndex = 0;
@@ -151,10 +155,10 @@ bool trcGroupMemberWalk(int alone, float bound, inout float mu, inout vec4 color
   TrcMember s = trcVolume0;
 //TRC::EachMember s = alone == @ ? trcVolume@ : s;
   trcMemberIndex = alone;
-  trcMemberAdvance(s, mu + s.lambdaNear);
+  trcMemberAdvance(s, mu + in_lambdaNear[alone]);
   bool goesOn = trcMemberWalk(s, bound, in_maximumSteps, color, steps, stopped);
   inside = s.inside;
-  mu = max(mu, s.from - s.lambdaNear);
+  mu = max(mu, s.from - in_lambdaNear[alone]);
 //TRC::EachMember trcVolume@ = alone == @ ? s : trcVolume@;
   return goesOn;
 }
@@ -174,7 +178,7 @@ bool trcGroupMemberWalk(int alone, float bound, inout float mu, inout vec4 color
 {
   bool goesOn = true;
   inside = true;
-//TRC::EachMember if (alone == @) { trcMemberAdvance_v@(trcVolume@, mu + trcVolume@.lambdaNear); goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - trcVolume@.lambdaNear); }
+//TRC::EachMember if (alone == @) { trcMemberAdvance_v@(trcVolume@, mu + in_lambdaNear_v@); goesOn = trcMemberWalk_v@(trcVolume@, bound, in_maximumSteps, color, steps, stopped); inside = trcVolume@.inside; mu = max(mu, trcVolume@.from - in_lambdaNear_v@); }
   return goesOn;
 }
 #endif
@@ -219,7 +223,7 @@ bool trcGroupWalkAlone(uint head, int alone, inout float mu, inout vec4 color, i
   inout bool stopped, out bool handedBack)
 {
   float bound = TRC_GROUP_FAR;
-//TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - trcVolume@.lambdaNear);
+//TRC::EachMember if (@ != alone && trcVolume@.pending) bound = min(bound, trcVolume@.entryLambda - in_lambdaNear_v@);
   bool inside;
   // It walks from where the ray is (its span may have begun before the last event).
   bool goesOn = trcGroupMemberWalk(alone, bound, mu, color, steps, stopped, inside);
@@ -240,12 +244,15 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
 {
   // Where opaque geometry, the far plane or the range ends the ray, in mu.
   float muMax = muTo;
+  groupRayPixel = fragCoord;
 //TRC::EachMember trcMemberStart_v@(fragCoord, trcVolume@);
+  // A unit of mu is the same length for every volume: one register for all.
+  float worldScale = trcMemberWorldScale_v0();
 #ifdef TRC_PEEL_STAGE
-//TRC::EachMember trcVolume@.ray.lambdaMin = muFrom + trcVolume@.lambdaNear;
-//TRC::EachMember trcVolume@.ray.lambdaMax = min(trcVolume@.ray.lambdaMax, muTo + trcVolume@.lambdaNear);
+//TRC::EachMember trcVolume@.lambdaMin = muFrom + in_lambdaNear_v@;
+//TRC::EachMember trcVolume@.lambdaMax = min(trcVolume@.lambdaMax, muTo + in_lambdaNear_v@);
 #endif
-//TRC::EachMember muMax = min(muMax, trcVolume@.ray.lambdaMax - trcVolume@.lambdaNear);
+//TRC::EachMember muMax = min(muMax, trcVolume@.lambdaMax - in_lambdaNear_v@);
 //TRC::EachMember trcVolume@.pending = trcNextEntry(head, @u, true, 0.0, 0.0, 0u, trcVolume@.entryLambda, trcVolume@.entryKey, trcVolume@.entryNear) != 0u;
   float mu = -TRC_GROUP_FAR;
   int count = 0;  // volumes inside
@@ -269,7 +276,7 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
       int m = -1;
       float event = TRC_GROUP_FAR;
       count = 0;
-//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.spanEnd - trcVolume@.lambdaNear, trcVolume@.entryLambda - trcVolume@.lambdaNear, m, event, count, alone);
+//TRC::EachMember trcGroupConsider(@, trcVolume@.inside, trcVolume@.pending, trcVolume@.spanEnd - in_lambdaNear_v@, trcVolume@.entryLambda - in_lambdaNear_v@, m, event, count, alone);
       if (m < 0)
       {
         finished = true;
@@ -297,11 +304,9 @@ void trcGroupTraverse(uint head, vec2 fragCoord, float muFrom, float muTo, inout
         vec3 e0 = vec3(0.0);
         vec3 e1 = vec3(0.0);
         vec3 e2 = vec3(0.0);
-        float scale = 0.0;
-//TRC::EachMember if (trcVolume@.inside) trcMemberPart_v@(trcVolume@, start + trcVolume@.lambdaNear, end + trcVolume@.lambdaNear, ta, tb, e0, e1, e2);
-//TRC::EachMember scale = alone == @ ? trcVolume@.ray.worldScale : scale;
+//TRC::EachMember if (trcVolume@.inside) trcMemberPart_v@(trcVolume@, start + in_lambdaNear_v@, end + in_lambdaNear_v@, ta, tb, e0, e1, e2);
         // One volume inside here only after a walk that stopped at the bound (a sliver).
-        trcCompositeMixture(ta, tb, e0, e1, e2, (end - start) * scale, color);
+        trcCompositeMixture(ta, tb, e0, e1, e2, (end - start) * worldScale, color);
         mixed = mixed || count > 1;
       }
       if (color.a >= in_groupEarlyTermination)

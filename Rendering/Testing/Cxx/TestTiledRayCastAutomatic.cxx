@@ -16,7 +16,8 @@
 // decided again; a blend mode other than compositing uses partial pre-integration's nodes as
 // always. Without SynchronousStatistics a new transfer function is drawn at once with partial
 // pre-integration while the choice is made on a worker thread, and with its table once made;
-// edits in quick succession abandon the choices they overtake. Every image is checked against
+// edits in quick succession abandon the choices they overtake, and a key that changes in
+// consecutive frames is not chosen for until a frame keeps it. Every image is checked against
 // the exact reference with the default bounds.
 #include "TiledRayCastTestScene.h"
 
@@ -152,6 +153,33 @@ int TestTiledRayCastAutomatic(int argc, char* argv[])
            scene.Window, scene.Renderer, scene.Volume, trctest::Bounds(), "choice made") &&
       ok;
     ok = Expect(scene.Warnings->Count == 0, "asynchronous choice: no warning") && ok;
+  }
+  {
+    // A key that changes in consecutive frames (an edit every frame, or points that move) gets
+    // no choice until a frame keeps it, even where each frame waits for its choice: each would
+    // be abandoned by the next frame's, its table's build taking the cores from the frames.
+    trctest::WatchedVolume scene(fin, trctest::MakePropertyFor(fin, 0.05), 160);
+    scene.Mapper->SetIntegrationModeToAutomatic();
+    scene.Mapper->SynchronousStatisticsOn();
+    View(scene);
+    scene.Window->Render();
+    scene.Window->Render();
+    double range[2];
+    fin->GetPointData()->GetScalars()->GetRange(range);
+    vtkPiecewiseFunction* opacity = scene.Volume->GetProperty()->GetScalarOpacity();
+    vtkTiledRayCastStatistics* stats = scene.Mapper->GetStatistics();
+    const int expected[3] = { M::PRE_INTEGRATION_2D, M::PARTIAL_PRE_INTEGRATION,
+      M::PARTIAL_PRE_INTEGRATION };
+    for (int edit = 0; edit < 3; ++edit)
+    {
+      opacity->AddPoint(range[0] + (0.3 + 0.1 * edit) * (range[1] - range[0]), 0.1 + 0.05 * edit);
+      scene.Window->Render();
+      ok = Expect(stats->GetIntegrationMode() == expected[edit],
+             "edit " + std::to_string(edit) +
+               " of consecutive ones: " + M::GetIntegrationModeAsString(expected[edit])) &&
+        ok;
+    }
+    ok = Check(scene, M::PRE_INTEGRATION_2D, "a frame that keeps its key: the choice") && ok;
   }
   {
     trctest::WatchedVolume scene(box, trctest::MakePropertyFor(box, 0.05), 160);
