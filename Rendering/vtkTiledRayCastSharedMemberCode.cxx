@@ -153,6 +153,22 @@ bool vtkTiledRayCastSharedMemberCode::Make(const std::string& code, int count,
     std::smatch match;
     if (!std::regex_match(lines[i], match, declaration))
     {
+      // A uniform of the volume's declared otherwise (a layout qualifier, several names) would
+      // be shared by every volume unseen: refused, the volumes keep a copy each.
+      static const std::regex other(R"(^\s*(layout\s*\(.*\)\s*)?uniform\b.*\bin_\w+)");
+      if (std::regex_search(lines[i], other))
+      {
+        bool sharedOnly = false;
+        for (const std::string& name : sharedUniforms)
+        {
+          sharedOnly = sharedOnly || lines[i].find(name) != std::string::npos;
+        }
+        if (!sharedOnly)
+        {
+          why = "a uniform declaration it does not read (\"" + lines[i] + "\")";
+          return false;
+        }
+      }
       continue;
     }
     const std::string type = match[1];
