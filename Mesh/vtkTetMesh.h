@@ -71,9 +71,13 @@ public:
   {
     this->Array->SetName(name);
     this->Array->SetNumberOfComponents(4);
+    this->Sync();
   }
-  uint32_t* data() { return this->Array->GetPointer(0); }
-  const uint32_t* data() const { return this->Array->GetPointer(0); }
+  // The values' address is kept here, not asked of the array at each access: GetPointer() is
+  // not inline (a call through the PLT for every word the builder's loops read, and no loop
+  // over operator[] could be vectorised).
+  uint32_t* data() { return this->Data; }
+  const uint32_t* data() const { return this->Data; }
   uint32_t* begin() { return this->data(); }
   uint32_t* end() { return this->data() + this->size(); }
   const uint32_t* begin() const { return this->data(); }
@@ -82,8 +86,16 @@ public:
   bool empty() const { return this->size() == 0; }
   uint32_t& operator[](size_t i) { return this->data()[i]; }
   uint32_t operator[](size_t i) const { return this->data()[i]; }
-  void clear() { this->Array->SetNumberOfValues(0); }
-  void resize(size_t n) { this->Array->SetNumberOfValues(static_cast<vtkIdType>(n)); }
+  void clear()
+  {
+    this->Array->SetNumberOfValues(0);
+    this->Sync();
+  }
+  void resize(size_t n)
+  {
+    this->Array->SetNumberOfValues(static_cast<vtkIdType>(n));
+    this->Sync();
+  }
   void assign(size_t n, uint32_t value)
   {
     this->resize(n);
@@ -94,18 +106,34 @@ public:
     if (this->empty()) // Allocate() drops the values
     {
       this->Array->Allocate(static_cast<vtkIdType>(n));
+      this->Sync();
     }
   }
   /// Bytes allocated, and freeing them.
   size_t capacity_bytes() const { return static_cast<size_t>(this->Array->GetSize()) * 4; }
-  void free() { this->Array->Initialize(); }
-  void push_back(uint32_t value) { this->Array->InsertNextValue(value); }
-  void swap(vtkTetMeshWords& other) { std::swap(this->Array, other.Array); }
+  void free()
+  {
+    this->Array->Initialize();
+    this->Sync();
+  }
+  void push_back(uint32_t value)
+  {
+    this->Array->InsertNextValue(value);
+    this->Sync();
+  }
+  void swap(vtkTetMeshWords& other)
+  {
+    std::swap(this->Array, other.Array);
+    std::swap(this->Data, other.Data);
+  }
   /// The array itself (4 components, named), for a layout to share.
   vtkTypeUInt32Array* GetArray() const { return this->Array; }
 
 private:
+  void Sync() { this->Data = this->Array->GetPointer(0); }
+
   vtkSmartPointer<vtkTypeUInt32Array> Array = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  uint32_t* Data = nullptr;
 };
 #endif
 
