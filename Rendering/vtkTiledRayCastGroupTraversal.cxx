@@ -29,11 +29,6 @@
 
 namespace
 {
-bool IsIdentifierChar(char c)
-{
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
 // The uniforms every volume of a group shares, declared once: the scene's depth, and the partial
 // pre-integration table (the same function whatever the transfer function).
 const char* const SharedUniforms[] = { "in_opaqueDepth", "in_psiTable", "in_psiTableSize" };
@@ -98,17 +93,18 @@ std::string vtkTiledRayCastGroupTraversal::Rename(
     {
       // A number (1e-12, 0x7FFFFFFFu): copied whole, so that no part of it reads as a name.
       size_t j = i;
-      while (j < code.size() && (IsIdentifierChar(code[j]) || code[j] == '.'))
+      while (j < code.size() &&
+        (vtkTiledRayCastSharedMemberCode::IsIdentifierChar(code[j]) || code[j] == '.'))
       {
         ++j;
       }
       out.append(code, i, j - i);
       i = j;
     }
-    else if (IsIdentifierChar(c))
+    else if (vtkTiledRayCastSharedMemberCode::IsIdentifierChar(c))
     {
       size_t j = i;
-      while (j < code.size() && IsIdentifierChar(code[j]))
+      while (j < code.size() && vtkTiledRayCastSharedMemberCode::IsIdentifierChar(code[j]))
       {
         ++j;
       }
@@ -192,25 +188,18 @@ bool vtkTiledRayCastGroupTraversal::Update(const std::vector<Inputs>& inputs,
   // Volumes of the same code share one copy of it where it can be shared; else each has its own,
   // renamed.
   std::string volumes;
+  std::string why; // what Make() could not share (for a debugger: either way the group is drawn)
   this->Indexed.clear();
-  this->SharedCodeRefusal.clear();
-  this->SharedCode = std::all_of(
-    codes.begin(), codes.end(), [&codes](const std::string& c) { return c == codes[0]; });
-  if (count < SharedCodeMembers)
+  this->SharedCode = count >= SharedCodeMembers &&
+    std::all_of(
+      codes.begin(), codes.end(), [&codes](const std::string& c) { return c == codes[0]; }) &&
+    vtkTiledRayCastSharedMemberCode::Make(codes[0], count,
+      std::vector<std::string>(std::begin(SharedUniforms), std::end(SharedUniforms)), volumes,
+      this->Indexed, why);
+  if (!this->SharedCode)
   {
-    this->SharedCode = false;
-    this->SharedCodeRefusal = "fewer than " + std::to_string(SharedCodeMembers) + " volumes";
-  }
-  else if (!this->SharedCode)
-  {
-    this->SharedCodeRefusal = "the volumes' code differs";
-  }
-  else if (!vtkTiledRayCastSharedMemberCode::Make(codes[0], count,
-             std::vector<std::string>(std::begin(SharedUniforms), std::end(SharedUniforms)),
-             volumes, this->Indexed, this->SharedCodeRefusal))
-  {
-    this->SharedCode = false;
     volumes.clear();
+    this->Indexed.clear();
   }
   for (int k = 0; !this->SharedCode && k < count; ++k)
   {

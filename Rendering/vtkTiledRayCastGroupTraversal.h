@@ -119,10 +119,9 @@ public:
 
   /**
    * Whether the programs hold one copy of the member code for every volume
-   * (vtkTiledRayCastSharedMemberCode: the volumes' code is the same, and shareable), and why not.
+   * (vtkTiledRayCastSharedMemberCode: the volumes' code is the same, and shareable).
    */
   bool GetSharedCode() const { return this->SharedCode; }
-  const std::string& GetSharedCodeRefusal() const { return this->SharedCodeRefusal; }
 
   void ReleaseGraphicsResources();
 
@@ -144,7 +143,6 @@ private:
   std::string Version;
   int NumberOfMembers = 0;
   bool SharedCode = false;
-  std::string SharedCodeRefusal;
   std::vector<std::string> Indexed; // the member uniforms that the shared code made arrays
   vtkTiledRayCastGroupComposition Composition;
 };

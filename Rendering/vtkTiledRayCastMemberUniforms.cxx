@@ -104,21 +104,20 @@ void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::st
     this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), static_cast<int>(location)));
   }
   // The shared ones are known as absent, so that a setter does not look for them in the program
-  // (where the group's own declaration of them would be found).
-  // Names this volume does not set stay unset: never looked up by their plain name, which in a
-  // program of shared code is the first volume's element.
-  for (const std::string& name : index >= 0 ? indexed : std::vector<std::string>())
+  // (where the group's own declaration of them would be found); so are the indexed ones this
+  // volume has no element of, whose plain name in a program of shared code is the first volume's.
+  for (const std::string& name : shared)
   {
     if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
     {
       this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), -1));
     }
   }
-  for (const std::string& name : shared)
+  for (size_t i = 0; index >= 0 && i < indexed.size(); ++i)
   {
-    if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
+    if (this->UniformLocs.find(indexed[i].c_str()) == this->UniformLocs.end())
     {
-      this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), -1));
+      this->UniformLocs.insert(std::make_pair(strdup(indexed[i].c_str()), -1));
     }
   }
   this->Handle = static_cast<int>(handle);

@@ -18,11 +18,6 @@
 
 namespace
 {
-bool IsIdentifierChar(char c)
-{
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-}
-
 // The reads of a sampler type that go through a volume's function: the read's name and the
 // parameters after the sampler, by the sampler's dimensions. Empty for a type not handled.
 std::vector<std::pair<std::string, std::string>> Reads(const std::string& type)
@@ -110,7 +105,7 @@ std::string ReadBefore(
     return std::string();
   }
   size_t nameBegin = nameEnd;
-  while (nameBegin > 0 && IsIdentifierChar(out[nameBegin - 1]))
+  while (nameBegin > 0 && vtkTiledRayCastSharedMemberCode::IsIdentifierChar(out[nameBegin - 1]))
   {
     --nameBegin;
   }

@@ -40,6 +40,7 @@
 #ifndef vtkTiledRayCastSharedMemberCode_h
 #define vtkTiledRayCastSharedMemberCode_h
 
+#include <cctype> // For std::isalnum
 #include <string> // For std::string
 #include <vector> // For std::vector
 
@@ -56,6 +57,15 @@ public:
   static bool Make(const std::string& code, int count,
     const std::vector<std::string>& sharedUniforms, std::string& shared,
     std::vector<std::string>& indexed, std::string& why);
+
+  /**
+   * Whether `c` may be part of a GLSL identifier (or number); the group's renaming reads words
+   * with it too.
+   */
+  static bool IsIdentifierChar(char c)
+  {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  }
 
   /**
    * The suffix of volume k's samplers ("_v1").

@@ -116,7 +116,6 @@ void trcCompositeMixture(float ta, float tb, vec3 e0, vec3 e1, vec3 e2, float le
 //TRC::EachMember void trcMemberStart_v@(vec2 fragCoord, out TrcMember s) { trcMemberIndex = @; trcMemberStart(fragCoord, s); }
 #define TrcRay_v0 TrcRay
 //TRC::EachMember #define in_lambdaNear_v@ in_lambdaNear[@]
-//TRC::EachMember float trcMemberWorldScale_v@() { trcMemberIndex = @; return trcMemberWorldScale(); }
 TrcRay trcPixelRay_v0(vec2 fragCoord)
 {
   trcMemberIndex = 0;
@@ -126,6 +125,11 @@ float trcLambdaFromWindowDepth_v0(TrcRay ray, float depth)
 {
   trcMemberIndex = 0;
   return trcLambdaFromWindowDepth(ray, depth);
+}
+float trcMemberWorldScale_v0()
+{
+  trcMemberIndex = 0;
+  return trcMemberWorldScale();
 }
 #endif
 
