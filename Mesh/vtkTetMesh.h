@@ -95,6 +95,7 @@ public:
   {
     this->Array->SetNumberOfValues(static_cast<vtkIdType>(n));
     this->Sync();
+    vtkTetMeshHugePages::Advise(this->Data, 4 * n);
   }
   void assign(size_t n, uint32_t value)
   {
@@ -107,6 +108,7 @@ public:
     {
       this->Array->Allocate(static_cast<vtkIdType>(n));
       this->Sync();
+      vtkTetMeshHugePages::Advise(this->Data, 4 * n);
     }
   }
   /// Bytes allocated, and freeing them.

@@ -9,6 +9,7 @@
 
 =========================================================================*/
 #include "vtkTetMeshCompactLayout.h"
+#include "vtkTetMeshHugePages.h"
 
 #include "vtkFloatArray.h"
 #include "vtkObjectFactory.h"
@@ -135,6 +136,7 @@ void vtkTetMeshCompactLayout::PackPoints(vtkTetMesh* mesh)
   auto* array = static_cast<vtkFloatArray*>(this->Arrays[PointsArray].Array.Get());
   array->SetNumberOfTuples(numPoints);
   float* out = array->GetPointer(0);
+  vtkTetMeshHugePages::Advise(out, 16 * static_cast<size_t>(numPoints));
   const double* p = mesh->GetPoints();
   const double* s = mesh->GetPointScalars();
   double shift[3];
@@ -169,6 +171,7 @@ void vtkTetMeshCompactLayout::PackCellScalars(vtkTetMesh* mesh)
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
   array->SetNumberOfTuples(numTets);
   float* out = array->GetPointer(0);
+  vtkTetMeshHugePages::Advise(out, sizeof(float) * static_cast<size_t>(numTets));
   vtkSMPTools::For(0, numTets, 16384,
     [&](vtkIdType begin, vtkIdType end)
     {
