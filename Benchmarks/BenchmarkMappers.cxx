@@ -112,7 +112,7 @@ struct Row
   double FirstHitMs = NAN, PeelingMs = NAN, RayCastingMs = NAN, CompositingMs = NAN, Rays = NAN,
          MeanSteps = NAN, MaxSteps = NAN, Entries = NAN, TargetBytesPerPixel = NAN,
          MapperGpuMs = NAN, MapperCpuMs = NAN, SampleDistance = NAN, MeshBuildMs = NAN,
-         HostPeakBytesPerTet = NAN;
+         MeshUploadMs = NAN, HostPeakBytesPerTet = NAN;
 };
 
 const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms,min_ms,"
@@ -121,7 +121,7 @@ const char* Header = "scene,mesh,tets,image_size,mapper,setting,frames,median_ms
                      "max_passes_per_tile,pipeline,first_hit_ms,peeling_ms,ray_casting_ms,"
                      "compositing_ms,rays,mean_steps_per_ray,max_steps_per_ray,entries,"
                      "target_bytes_per_pixel,mapper_gpu_ms,mapper_cpu_ms,image_sample_distance,"
-                     "mesh_build_ms,host_peak_bytes_per_tet";
+                     "mesh_build_ms,host_peak_bytes_per_tet,mesh_upload_ms";
 
 std::string Cell(double v)
 {
@@ -147,7 +147,8 @@ void WriteRow(std::ostream& os, const Row& r)
      << Cell(r.CompositingMs) << "," << Cell(r.Rays) << "," << Cell(r.MeanSteps) << ","
      << Cell(r.MaxSteps) << "," << Cell(r.Entries) << "," << Cell(r.TargetBytesPerPixel) << ","
      << Cell(r.MapperGpuMs) << "," << Cell(r.MapperCpuMs) << "," << Cell(r.SampleDistance) << ","
-     << Cell(r.MeshBuildMs) << "," << Cell(r.HostPeakBytesPerTet) << "\n";
+     << Cell(r.MeshBuildMs) << "," << Cell(r.HostPeakBytesPerTet) << "," << Cell(r.MeshUploadMs)
+     << "\n";
 }
 
 // The median of the timed frames' values; NaN (an empty cell) for none.
@@ -403,6 +404,7 @@ void TimeSetting(const Setting& setting, vtkRenderWindow* window, vtkRenderer* r
   if (ourMapper)
   {
     row.MeshBuildMs = 1000.0 * ourMapper->GetStatistics()->GetMeshBuildTime();
+    row.MeshUploadMs = 1000.0 * ourMapper->GetStatistics()->GetMeshUploadTime();
   }
 
   // Interacting: the rate for the warm-up (the sample distance settles) and timed frames.

@@ -62,6 +62,7 @@ void vtkTiledRayCastStatistics::ResetFrameCounts()
   this->TransferFunctionBuildTime = 0;
   this->RenderTime = 0;
   this->UploadedBytes = 0;
+  this->MeshUploadTime = 0;
   this->PassesPerTile.clear();
   this->Modified();
 }
@@ -200,6 +201,7 @@ void vtkTiledRayCastStatistics::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TransferFunctionBuildTime: " << this->TransferFunctionBuildTime << "\n";
   os << indent << "RenderTime: " << this->RenderTime << "\n";
   os << indent << "UploadedBytes: " << this->UploadedBytes << "\n";
+  os << indent << "MeshUploadTime: " << this->MeshUploadTime << "\n";
   os << indent << "MeshBytes: " << this->MeshBytes << "\n";
   os << indent << "MeshBytesPerTetrahedron: " << this->MeshBytesPerTetrahedron << "\n";
   os << indent << "NumberOfMeshTextures: " << this->NumberOfMeshTextures << "\n";

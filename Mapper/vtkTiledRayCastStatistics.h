@@ -308,6 +308,16 @@ public:
 
   ///@{
   /**
+   * Time the last render spent uploading the mesh layout, in seconds (0 when nothing was
+   * uploaded): the CPU's time in the upload calls, which return once the data is copied out of
+   * the layout's arrays. The first frame of a large mesh spends it beside MeshBuildTime.
+   */
+  vtkSetMacro(MeshUploadTime, double);
+  vtkGetMacro(MeshUploadTime, double);
+  ///@}
+
+  ///@{
+  /**
    * GPU memory the mapper holds, in bytes: the mesh (layout textures and boundary faces),
    * the transfer-function textures, the per-pixel render targets, and their sum. Also the
    * mesh's bytes per tetrahedron.
@@ -430,6 +440,7 @@ protected:
   double TransferFunctionBuildTime = 0;
   double RenderTime = 0;
   vtkIdType UploadedBytes = 0;
+  double MeshUploadTime = 0;
   vtkIdType MeshBytes = 0;
   vtkIdType TransferFunctionBytes = 0;
   vtkIdType RenderTargetBytes = 0;

@@ -255,14 +255,18 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 {
   vtkIdType uploaded = 0;
   std::string error;
+  vtkNew<vtkTimerLog> timer;
+  timer->StartTimer();
   if (!this->Reported(this->MeshTextures.Update(
                         window, this->Mesh.GetLayout(), this->Mesh.GetMesh(), uploaded, error),
         error))
   {
     return false;
   }
+  timer->StopTimer();
   vtkTiledRayCastStatistics* stats = this->Self->Statistics;
   stats->SetUploadedBytes(stats->GetUploadedBytes() + uploaded);
+  stats->SetMeshUploadTime(uploaded > 0 ? timer->GetElapsedTime() : 0.0);
   return true;
 }
 

@@ -67,6 +67,7 @@ void vtkTiledRayCastMeshTextures::ReleaseGraphicsResources(vtkWindow* window)
     t->Release(window);
   }
   this->Textures.clear();
+  this->Staging.ReleaseGraphicsResources();
   this->UploadedTime = 0;
   this->Bytes = 0;
 }
@@ -151,6 +152,9 @@ bool vtkTiledRayCastMeshTextures::Update(vtkOpenGLRenderWindow* window, vtkTetMe
     sent += bytes;
   }
 
+  // The host buffers of large arrays go once the GPU has copied out of them: the upload is
+  // complete when Update returns.
+  this->Staging.ReleaseGraphicsResources();
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
     error = "The GPU ran out of memory while uploading the mesh. Nothing is drawn.";
@@ -186,17 +190,8 @@ void vtkTiledRayCastMeshTextures::UploadTextureBuffers(
     const size_t values = static_cast<size_t>(count * comps);
     vtkOpenGLBufferObject* buffer = t->Parts[k]->Buffer;
     vtkTextureObject* texture = t->Parts[k]->Texture;
-    buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-    if (isFloat)
-    {
-      buffer->Upload(static_cast<const float*>(array->GetVoidPointer(first * comps)), values,
-        vtkOpenGLBufferObject::TextureBuffer);
-    }
-    else
-    {
-      buffer->Upload(static_cast<const vtkTypeUInt32*>(array->GetVoidPointer(first * comps)),
-        values, vtkOpenGLBufferObject::TextureBuffer);
-    }
+    // Both types are 4 bytes a value.
+    this->Staging.Upload(buffer, array->GetVoidPointer(first * comps), 4 * values);
     texture->SetContext(window);
     texture->SetInternalFormat(isFloat ? floatFormats[comps] : uintFormats[comps]);
     texture->CreateTextureBuffer(

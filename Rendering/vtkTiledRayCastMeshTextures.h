@@ -18,6 +18,7 @@
  * (vtkTetMeshLayout::GetNumberOfTextureBuffers()): its parts are "in_<name>", "in_<name>_1", ...
  * Uploads only the arrays whose MTime is newer than the last upload (a moving mesh sends its points
  * only; a camera move nothing); a layout of other arrays (names, count or kinds) starts afresh.
+ * Texture buffers of 64 MiB and more go through vtkTiledRayCastStagedUpload.
  *
  * Private to the module: not wrapped, not installed.
  */
@@ -25,7 +26,8 @@
 #ifndef vtkTiledRayCastMeshTextures_h
 #define vtkTiledRayCastMeshTextures_h
 
-#include "vtkType.h" // For vtkIdType, vtkMTimeType
+#include "vtkTiledRayCastStagedUpload.h" // For vtkTiledRayCastStagedUpload
+#include "vtkType.h"                     // For vtkIdType, vtkMTimeType
 
 #include <memory> // For std::unique_ptr
 #include <string> // For std::string
@@ -93,6 +95,8 @@ private:
     vtkOpenGLRenderWindow* window, MeshTexture* t, vtkDataArray* array, vtkIdType bufferSize);
 
   std::vector<std::unique_ptr<MeshTexture>> Textures;
+  // Large arrays go through it (every core copying into mapped host memory).
+  vtkTiledRayCastStagedUpload Staging;
   vtkMTimeType UploadedTime = 0;
   vtkIdType Bytes = 0;
 };
