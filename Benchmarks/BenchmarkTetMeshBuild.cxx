@@ -18,11 +18,13 @@
 // The directory defaults to the source tree's Testing/Data/Meshes and the files to all of its
 // .vtu files. --phases adds, per dataset, the median time of each phase of a full build.
 //
-//        BenchmarkTetMeshBuild [--threads N] --generated RUNG [RUNG ...]
+//        BenchmarkTetMeshBuild [--threads N] [--scratch-limit BYTES] --generated RUNG [RUNG ...]
 // Rungs made in memory (GeneratedMeshes.h: wavelet6_100m ... wavelet6_1b), too large for the
 // table above: one build each as the mapper makes it (spatial and point ordering, compact
 // layout, scratch freed by stage), printed as CSV: the time to make the grid, the build's time
 // and rate, its phases, and the host's peak beyond the grid (VmHWM, ProcessMemory.h).
+// --scratch-limit sets the builder's MaximumKeptScratchMemory (0: a small mesh built as a huge
+// one is, its faces matched in four passes).
 #include "GeneratedMeshes.h"
 #include "ProcessMemory.h"
 #include "vtkDirectory.h"
@@ -241,7 +243,7 @@ void BenchmarkMesh(vtkUnstructuredGrid* grid, const std::string& file, int runs,
 }
 
 // One rung made in memory, built once as the mapper builds it: a CSV line (header first).
-bool BenchmarkGeneratedRung(const std::string& name, bool header)
+bool BenchmarkGeneratedRung(const std::string& name, bool header, vtkIdType scratchLimit)
 {
   const generated::Rung* rung = generated::FindRung(name);
   if (!rung)
@@ -262,6 +264,10 @@ bool BenchmarkGeneratedRung(const std::string& name, bool header)
   vtkNew<vtkTetMeshBuilder> builder;
   builder->SpatialOrderingOn();
   builder->PointOrderingOn();
+  if (scratchLimit >= 0)
+  {
+    builder->SetMaximumKeptScratchMemory(scratchLimit);
+  }
   vtkNew<vtkTetMeshCompactLayout> layout;
   vtkTimerLog::ResetLog();
   vtkTimerLog::LoggingOn();
@@ -301,6 +307,7 @@ int main(int argc, char* argv[])
 {
   int runs = 7;
   int threads = 0;
+  vtkIdType scratchLimit = -1; // the builder's default
   bool phases = false;
   bool generatedRungs = false;
   std::string directory = TRC_MESH_DATA_DIRECTORY;
@@ -324,10 +331,14 @@ int main(int argc, char* argv[])
     {
       generatedRungs = true;
     }
+    else if (!std::strcmp(argv[a], "--scratch-limit") && a + 1 < argc)
+    {
+      scratchLimit = std::atoll(argv[++a]);
+    }
     else if (!std::strcmp(argv[a], "--help") || !std::strcmp(argv[a], "-h"))
     {
       std::printf("usage: %s [--runs N] [--threads N] [--phases] [data directory [file.vtu ...]]\n"
-                  "       %s [--threads N] --generated RUNG [RUNG ...]\n",
+                  "       %s [--threads N] [--scratch-limit BYTES] --generated RUNG [RUNG ...]\n",
         argv[0], argv[0]);
       return EXIT_SUCCESS;
     }
@@ -348,7 +359,7 @@ int main(int argc, char* argv[])
     bool ok = !positional.empty();
     for (size_t r = 0; r < positional.size(); ++r)
     {
-      ok = BenchmarkGeneratedRung(positional[r], r == 0) && ok;
+      ok = BenchmarkGeneratedRung(positional[r], r == 0, scratchLimit) && ok;
     }
     return ok ? EXIT_SUCCESS : EXIT_FAILURE;
   }

@@ -45,6 +45,10 @@ inline bool SameFace(const FaceEntry& a, const FaceEntry& b)
   return a.Mid == b.Mid && a.Hi == b.Hi;
 }
 
+// Tetrahedra in chunks of this many for the passes of a huge mesh (ChunkPasses): a chunk is a
+// compact region, mostly within one pass's range of points.
+constexpr vtkIdType ChunkTets = 65536;
+
 // Calls f(face, lo, mid, hi) for the four faces of a tetrahedron, lo < mid < hi; faces with a
 // repeated point id (collapsed, zero area) are skipped.
 template <typename F>
@@ -217,12 +221,21 @@ void vtkTetMeshFaceMatching::MatchFaces(
   // quarter of that at a time, for one more read of the tetrahedra per pass.
   const vtkIdType entryBytes = 4 * numTets * static_cast<vtkIdType>(sizeof(FaceEntry));
   const int passes = entryBytes > scratchLimit ? 4 : 1;
+  // Points and tetrahedra are mostly in one spatial order (vtkTetMeshSpatialOrder): a pass's
+  // range of points is a region, and the tetrahedra with faces there are mostly a quarter of
+  // them. Each pass reads only the chunks that have some.
+  vtkTetMeshVector<uint8_t> chunkPasses;
+  if (passes > 1)
+  {
+    ChunkPasses(state, passes, chunkPasses);
+  }
   Pairing result;
   for (int pass = 0; pass < passes; ++pass)
   {
     const uint32_t first = static_cast<uint32_t>(numPoints * pass / passes);
     const uint32_t last = static_cast<uint32_t>(numPoints * (pass + 1) / passes);
-    BucketFaces(state, first, last, 4 * numTets / passes);
+    BucketFaces(state, first, last, 4 * numTets / passes,
+      chunkPasses.empty() ? nullptr : chunkPasses.data(), static_cast<uint8_t>(1u << pass));
     PairFaces(state, last - first, result);
     if (pass + 1 < passes)
     {
@@ -237,11 +250,79 @@ void vtkTetMeshFaceMatching::MatchFaces(
 }
 
 //------------------------------------------------------------------------------
+// For each chunk of ChunkTets tetrahedra, bit p set where a face of one of them has its smallest
+// point id in pass p's range. A face's smallest id is its tetrahedron's smallest or second
+// smallest (the face without the smallest point): both are marked, which may mark a pass of no
+// face (a degenerate face is never bucketed), never misses one.
+void vtkTetMeshFaceMatching::ChunkPasses(
+  vtkTetMeshBuildState& state, int passes, vtkTetMeshVector<uint8_t>& chunkPasses)
+{
+  vtkTetMesh* mesh = state.Mesh;
+  const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
+  const uint64_t numPoints = static_cast<uint64_t>(mesh->GetNumberOfPoints());
+  const uint32_t* tp = mesh->TetPoints.data();
+  const vtkIdType chunks = (numTets + ChunkTets - 1) / ChunkTets;
+  chunkPasses.resize(static_cast<size_t>(chunks));
+  auto passOf = [passes, numPoints](uint32_t id)
+  {
+    int p = 0;
+    while (p + 1 < passes && id >= numPoints * static_cast<uint64_t>(p + 1) / passes)
+    {
+      ++p;
+    }
+    return p;
+  };
+  vtkSMPTools::For(0, chunks, 1,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        uint8_t bits = 0;
+        const vtkIdType last = std::min(numTets, (c + 1) * ChunkTets);
+        for (vtkIdType t = c * ChunkTets; t < last; ++t)
+        {
+          const uint32_t* ids = tp + 4 * t;
+          const uint32_t lo01 = std::min(ids[0], ids[1]), hi01 = std::max(ids[0], ids[1]);
+          const uint32_t lo23 = std::min(ids[2], ids[3]), hi23 = std::max(ids[2], ids[3]);
+          const uint32_t smallest = std::min(lo01, lo23);
+          const uint32_t second = std::min(std::max(lo01, lo23), std::min(hi01, hi23));
+          bits |= static_cast<uint8_t>((1u << passOf(smallest)) | (1u << passOf(second)));
+        }
+        chunkPasses[static_cast<size_t>(c)] = bits;
+      }
+    });
+}
+
+namespace
+{
+// The tetrahedra of [begin, end) in chunks that have faces in the pass (`passBit`), each
+// given to `f` (all of them without `chunkPasses`).
+template <typename F>
+void ForTetsOfPass(
+  vtkIdType begin, vtkIdType end, const uint8_t* chunkPasses, uint8_t passBit, F&& f)
+{
+  const vtkIdType chunk = ChunkTets;
+  for (vtkIdType t = begin; t < end;)
+  {
+    const vtkIdType chunkEnd = std::min(end, (t / chunk + 1) * chunk);
+    if (!chunkPasses || (chunkPasses[t / chunk] & passBit))
+    {
+      for (; t < chunkEnd; ++t)
+      {
+        f(t);
+      }
+    }
+    t = chunkEnd;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
 // The counting sort of the faces whose smallest point id is in [first, last) by that id into
 // state.FaceEntries (bucket first + v from BucketStarts[v]), and their sides into
 // state.FaceSides. `faces` is about how many there are (for the per-block counters' size).
-void vtkTetMeshFaceMatching::BucketFaces(
-  vtkTetMeshBuildState& state, uint32_t first, uint32_t last, vtkIdType faces)
+void vtkTetMeshFaceMatching::BucketFaces(vtkTetMeshBuildState& state, uint32_t first, uint32_t last,
+  vtkIdType faces, const uint8_t* chunkPasses, uint8_t passBit)
 {
   vtkTetMesh* mesh = state.Mesh;
   const vtkIdType numTets = mesh->GetNumberOfTetrahedra();
@@ -261,17 +342,18 @@ void vtkTetMeshFaceMatching::BucketFaces(
     [&](int b, vtkIdType begin, vtkIdType end)
     {
       uint32_t* count = counts.data() + static_cast<size_t>(b) * numPoints;
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
-          [&](uint32_t, uint32_t lo, uint32_t, uint32_t)
-          {
-            if (lo - first < numPoints) // unsigned: lo in [first, last)
+      ForTetsOfPass(begin, end, chunkPasses, passBit,
+        [&](vtkIdType t)
+        {
+          ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
+            [&](uint32_t, uint32_t lo, uint32_t, uint32_t)
             {
-              ++count[lo - first];
-            }
-          });
-      }
+              if (lo - first < numPoints) // unsigned: lo in [first, last)
+              {
+                ++count[lo - first];
+              }
+            });
+        });
     });
   const uint64_t running = PrefixSums(state, blocks, numPoints);
   if (state.FaceEntries.size() < running)
@@ -286,24 +368,25 @@ void vtkTetMeshFaceMatching::BucketFaces(
     [&](int b, vtkIdType begin, vtkIdType end)
     {
       uint32_t* offset = counts.data() + static_cast<size_t>(b) * numPoints;
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        uint8_t side = 0;
-        ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
-          [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
-          {
-            if (lo - first >= numPoints)
+      ForTetsOfPass(begin, end, chunkPasses, passBit,
+        [&](vtkIdType t)
+        {
+          uint8_t side = 0;
+          ForEachSortedFace(tp + 4 * t, static_cast<uint32_t>(t),
+            [&](uint32_t face, uint32_t lo, uint32_t mid, uint32_t hi)
             {
-              return; // another pass's
-            }
-            FaceEntry& e = entries[offset[lo - first]++];
-            e.Mid = mid;
-            e.Hi = hi;
-            e.Face = face;
-            side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
-          });
-        sides[t] |= side;
-      }
+              if (lo - first >= numPoints)
+              {
+                return; // another pass's
+              }
+              FaceEntry& e = entries[offset[lo - first]++];
+              e.Mid = mid;
+              e.Hi = hi;
+              e.Face = face;
+              side |= static_cast<uint8_t>(FaceParity(tp, face) ? 1u << (face & 3u) : 0u);
+            });
+          sides[t] |= side;
+        });
     });
 }
 

@@ -77,8 +77,10 @@ private:
     vtkIdType NonManifold = 0;
     std::vector<uint32_t> LeftOut;
   };
-  static void BucketFaces(
-    vtkTetMeshBuildState& state, uint32_t first, uint32_t last, vtkIdType faces);
+  static void ChunkPasses(
+    vtkTetMeshBuildState& state, int passes, vtkTetMeshVector<uint8_t>& chunkPasses);
+  static void BucketFaces(vtkTetMeshBuildState& state, uint32_t first, uint32_t last,
+    vtkIdType faces, const uint8_t* chunkPasses, uint8_t passBit);
   static uint64_t PrefixSums(vtkTetMeshBuildState& state, int blocks, size_t numPoints);
   static void PairFaces(vtkTetMeshBuildState& state, size_t buckets, Pairing& result);
 };

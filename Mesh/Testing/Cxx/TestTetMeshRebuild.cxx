@@ -17,8 +17,8 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkIdList.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkTestUtilities.h"
@@ -505,6 +505,23 @@ int PointOrder(vtkUnstructuredGrid* input)
 
 } // namespace
 
+// Face matching in four passes over ranges of point ids (as above MaximumKeptScratchMemory),
+// each reading only the chunks of 65,536 tetrahedra with faces in its range: on a mesh of ten
+// chunks in spatial order, the mesh and layouts of one pass.
+int FourPasses(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    ReadGrid(argc, argv, "Meshes/post_tets6_conforming.vtu");
+  TRC_CHECK(grid->GetNumberOfCells() > 9 * 65536);
+  Pipeline passes;
+  passes.Builder->SetMaximumKeptScratchMemory(0);
+  vtkTetMesh* mesh = passes.Build(grid);
+  TRC_CHECK(mesh->GetReport()->GetUsable());
+  TRC_CHECK_EMPTY(trc::CheckNeighbors(mesh));
+  TRC_CHECK_EMPTY(CompareWithFullBuild(grid, passes));
+  return EXIT_SUCCESS;
+}
+
 int TestTetMeshRebuild(int argc, char* argv[])
 {
   vtkSmartPointer<vtkUnstructuredGrid> grid = ReadGrid(argc, argv, "Meshes/spx_vistrails.vtu");
@@ -521,6 +538,7 @@ int TestTetMeshRebuild(int argc, char* argv[])
   TRC_CHECK(Everything(p, grid) == EXIT_SUCCESS);
   TRC_CHECK(TorusTranslation(argc, argv) == EXIT_SUCCESS);
   TRC_CHECK(PointOrder(grid) == EXIT_SUCCESS);
+  TRC_CHECK(FourPasses(argc, argv) == EXIT_SUCCESS);
 
   TRC_CHECK(std::string(vtkTetMeshBuilder::GetRebuildAsString(vtkTetMeshBuilder::RebuildPoints |
               vtkTetMeshBuilder::RebuildScalars)) == "points and scalars");
