@@ -255,6 +255,7 @@ bool vtkOpenGLTiledRayCastVolumeMapper::vtkInternals::UploadMesh(vtkOpenGLRender
 {
   vtkIdType uploaded = 0;
   std::string error;
+  this->MeshTextures.SetSoftwareRasterizer(this->Context.SoftwareRasterizer);
   vtkNew<vtkTimerLog> timer;
   timer->StartTimer();
   if (!this->Reported(this->MeshTextures.Update(

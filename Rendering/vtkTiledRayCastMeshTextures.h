@@ -55,6 +55,12 @@ public:
     vtkIdType& uploaded, std::string& error);
 
   /**
+   * Whether the context is a software rasterizer (large arrays are then not staged:
+   * vtkTiledRayCastStagedUpload).
+   */
+  void SetSoftwareRasterizer(bool software) { this->Staging.SetSoftwareRasterizer(software); }
+
+  /**
    * Upload every array on the next Update (a new layout object).
    */
   void Invalidate() { this->UploadedTime = 0; }

@@ -21,6 +21,7 @@ namespace
 {
 size_t MinimumStaged = size_t(64) << 20;
 size_t Chunk = size_t(64) << 20;
+bool StageOnSoftware = false;
 
 // Every core copies its part: one thread's memcpy is a fraction of the host's bandwidth.
 void ParallelCopy(void* destination, const void* source, size_t bytes)
@@ -45,6 +46,18 @@ void vtkTiledRayCastStagedUpload::SetSizes(size_t minimumStagedBytes, size_t chu
 {
   MinimumStaged = minimumStagedBytes;
   Chunk = std::max<size_t>(chunkBytes, 16); // whole texels
+}
+
+//------------------------------------------------------------------------------
+void vtkTiledRayCastStagedUpload::SetStageOnSoftwareRasterizers(bool stage)
+{
+  StageOnSoftware = stage;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTiledRayCastStagedUpload::GetStageOnSoftwareRasterizers()
+{
+  return StageOnSoftware;
 }
 
 //------------------------------------------------------------------------------
@@ -99,7 +112,8 @@ void vtkTiledRayCastStagedUpload::Upload(
   vtkOpenGLBufferObject* buffer, const void* data, size_t bytes)
 {
   buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
-  if (bytes < MinimumStaged || bytes == 0 || !this->MakeHostBuffers())
+  if (bytes < MinimumStaged || bytes == 0 || (this->SoftwareRasterizer && !StageOnSoftware) ||
+    !this->MakeHostBuffers())
   {
     buffer->Upload(static_cast<const char*>(data), bytes, vtkOpenGLBufferObject::TextureBuffer);
     return;

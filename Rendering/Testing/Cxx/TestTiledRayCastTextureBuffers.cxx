@@ -153,6 +153,7 @@ bool StagedEqualsDirect(vtkDataSet* grid)
   const size_t minimum = vtkTiledRayCastStagedUpload::GetMinimumStagedBytes();
   const size_t chunk = vtkTiledRayCastStagedUpload::GetChunkBytes();
   vtkTiledRayCastStagedUpload::SetSizes(0, 40000);
+  vtkTiledRayCastStagedUpload::SetStageOnSoftwareRasterizers(true); // llvmpipe too
   bool ok = true;
   for (vtkIdType texels : { vtkIdType(0), vtkIdType(1) << 15 })
   {
@@ -169,6 +170,7 @@ bool StagedEqualsDirect(vtkDataSet* grid)
       ok;
   }
   vtkTiledRayCastStagedUpload::SetSizes(minimum, chunk);
+  vtkTiledRayCastStagedUpload::SetStageOnSoftwareRasterizers(false);
   return ok;
 }
 
