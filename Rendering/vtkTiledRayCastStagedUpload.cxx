@@ -19,6 +19,20 @@
 
 namespace
 {
+// Waits for a fence (if any) and deletes it.
+void WaitAndDelete(void*& fence)
+{
+  if (fence)
+  {
+    GLsync sync = static_cast<GLsync>(fence);
+    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000) == GL_TIMEOUT_EXPIRED)
+    {
+    }
+    glDeleteSync(sync);
+    fence = nullptr;
+  }
+}
+
 size_t MinimumStaged = size_t(64) << 20;
 size_t Chunk = size_t(64) << 20;
 bool StageOnSoftware = false;
@@ -127,16 +141,8 @@ void vtkTiledRayCastStagedUpload::Upload(
     const size_t piece = std::min(chunk, bytes - offset);
     const int s = this->Next;
     this->Next = (this->Next + 1) % Slots;
-    if (this->Fences[s])
-    {
-      // The GPU's copy out of this host buffer, three chunks ago, must be done.
-      GLsync fence = static_cast<GLsync>(this->Fences[s]);
-      while (glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000) == GL_TIMEOUT_EXPIRED)
-      {
-      }
-      glDeleteSync(fence);
-      this->Fences[s] = nullptr;
-    }
+    // The GPU's copy out of this host buffer, three chunks ago, must be done.
+    WaitAndDelete(this->Fences[s]);
     ParallelCopy(this->Mapped[s], static_cast<const char*>(data) + offset, piece);
     glBindBuffer(GL_COPY_READ_BUFFER, this->HostBuffers[s]);
     glCopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, static_cast<GLintptr>(offset),
@@ -150,18 +156,14 @@ void vtkTiledRayCastStagedUpload::Upload(
 //------------------------------------------------------------------------------
 void vtkTiledRayCastStagedUpload::ReleaseGraphicsResources()
 {
+  if (!this->HostBuffers[0])
+  {
+    return; // nothing held: no GL call (the context may be gone)
+  }
   for (int s = 0; s < Slots; ++s)
   {
-    if (this->Fences[s])
-    {
-      // The copies out of the host buffers finish before the buffers go.
-      GLsync fence = static_cast<GLsync>(this->Fences[s]);
-      while (glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1000000000) == GL_TIMEOUT_EXPIRED)
-      {
-      }
-      glDeleteSync(fence);
-      this->Fences[s] = nullptr;
-    }
+    // The copies out of the host buffers finish before the buffers go.
+    WaitAndDelete(this->Fences[s]);
     if (this->Mapped[s])
     {
       glBindBuffer(GL_COPY_READ_BUFFER, this->HostBuffers[s]);
@@ -170,9 +172,6 @@ void vtkTiledRayCastStagedUpload::ReleaseGraphicsResources()
     }
   }
   glBindBuffer(GL_COPY_READ_BUFFER, 0);
-  if (this->HostBuffers[0])
-  {
-    glDeleteBuffers(Slots, this->HostBuffers);
-  }
+  glDeleteBuffers(Slots, this->HostBuffers);
   std::fill(this->HostBuffers, this->HostBuffers + Slots, 0u);
 }
