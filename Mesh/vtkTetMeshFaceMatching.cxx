@@ -218,7 +218,7 @@ void vtkTetMeshFaceMatching::MatchFaces(
   vtkSMPTools::Fill(state.FaceSides.begin(), state.FaceSides.end(), uint8_t(0));
   // A face is bucketed by its smallest point id, so the points can be taken in ranges, one
   // pass each: the face entries (12 bytes a face, 48 a tetrahedron) of a huge mesh then take a
-  // quarter of that at a time, for one more read of the tetrahedra per pass.
+  // quarter of that at a time.
   const vtkIdType entryBytes = 4 * numTets * static_cast<vtkIdType>(sizeof(FaceEntry));
   const int passes = entryBytes > scratchLimit ? 4 : 1;
   // Points and tetrahedra are mostly in one spatial order (vtkTetMeshSpatialOrder): a pass's

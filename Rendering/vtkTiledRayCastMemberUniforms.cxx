@@ -106,19 +106,17 @@ void vtkTiledRayCastMemberUniforms::Map(vtkShaderProgram* program, const std::st
   // The shared ones are known as absent, so that a setter does not look for them in the program
   // (where the group's own declaration of them would be found); so are the indexed ones this
   // volume has no element of, whose plain name in a program of shared code is the first volume's.
-  for (const std::string& name : shared)
+  auto markAbsent = [this](const std::string& name)
   {
     if (this->UniformLocs.find(name.c_str()) == this->UniformLocs.end())
     {
       this->UniformLocs.insert(std::make_pair(strdup(name.c_str()), -1));
     }
-  }
-  for (size_t i = 0; index >= 0 && i < indexed.size(); ++i)
+  };
+  std::for_each(shared.begin(), shared.end(), markAbsent);
+  if (index >= 0)
   {
-    if (this->UniformLocs.find(indexed[i].c_str()) == this->UniformLocs.end())
-    {
-      this->UniformLocs.insert(std::make_pair(strdup(indexed[i].c_str()), -1));
-    }
+    std::for_each(indexed.begin(), indexed.end(), markAbsent);
   }
   this->Handle = static_cast<int>(handle);
   this->Linked = true;

@@ -18,7 +18,8 @@
  * (vtkTetMeshLayout::GetNumberOfTextureBuffers()): its parts are "in_<name>", "in_<name>_1", ...
  * Uploads only the arrays whose MTime is newer than the last upload (a moving mesh sends its points
  * only; a camera move nothing); a layout of other arrays (names, count or kinds) starts afresh.
- * Texture buffers of 64 MiB and more go through vtkTiledRayCastStagedUpload.
+ * Texture buffers of 64 MiB and more go through vtkTiledRayCastStagedUpload on a GPU (not on a
+ * software rasterizer).
  *
  * Private to the module: not wrapped, not installed.
  */
